@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+
+namespace xfem {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Writes `K` in Matrix Market `coordinate real symmetric` form: only entries with row >= column
+/// are written (1-based), sorted by column then row, values in shortest round-trip form. `K` must
+/// hold at least its lower triangle; its upper triangle is ignored. Atomic; "-" is stdout.
+void write_symmetric_matrix(const SparseMatrix& K, const std::string& path);
+
+/// Reads a Matrix Market `coordinate real` matrix, `general` or `symmetric`. A symmetric file is
+/// returned as its full matrix (both triangles). Throws xfem::Error naming the file and line.
+SparseMatrix read_matrix(const std::string& path);
+
+/// Writes `v` as a Matrix Market `array real general` n x 1 vector. Atomic; "-" is stdout.
+void write_vector(const Eigen::VectorXd& v, const std::string& path);
+
+/// Reads an n x 1 Matrix Market vector, `array` or `coordinate` form.
+Eigen::VectorXd read_vector(const std::string& path);
+
+}  // namespace xfem

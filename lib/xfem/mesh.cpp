@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/mesh.h"
+
+
+#include "xfem/error.h"
+
+namespace xfem {
+
+double signed_volume(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                     const Eigen::Vector3d& p3) {
+  return (p1 - p0).cross(p2 - p0).dot(p3 - p0) / 6.0;
+}
+
+double signed_volume(const TetMesh& mesh, int tet) {
+  const auto& t = mesh.tets.row(tet);
+  return signed_volume(mesh.points.row(t[0]), mesh.points.row(t[1]), mesh.points.row(t[2]),
+                       mesh.points.row(t[3]));
+}
+
+const DataArray& require_array(const DataArrays& arrays, const std::string& name, const char* where,
+                               int components, std::size_t tuples, const std::string& file,
+                               const std::string& stage) {
+  const auto it = arrays.find(name);
+  if (it == arrays.end())
+    throw Error(file + ": " + where + " array '" + name + "' missing (is this " + stage + " output?)");
+  const DataArray& a = it->second;
+  if (a.components != components)
+    throw Error(file + ": " + where + " array '" + name + "' has " + std::to_string(a.components) +
+                " components, expected " + std::to_string(components));
+  if (tuples != static_cast<std::size_t>(-1) && a.tuples() != tuples)
+    throw Error(file + ": " + where + " array '" + name + "' has " + std::to_string(a.tuples()) +
+                " tuples, expected " + std::to_string(tuples));
+  return a;
+}
+
+DataArray make_array(DataArray::Type type, int components, std::size_t n, double fill) {
+  DataArray a;
+  a.type = type;
+  a.components = components;
+  a.values.assign(n * components, fill);
+  return a;
+}
+
+}  // namespace xfem

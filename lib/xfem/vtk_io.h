@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <string>
+#include <vector>
+
+#include "xfem/mesh.h"
+
+namespace xfem {
+
+/// Reads a tetrahedral volume mesh from VTK XML `.vtu` or legacy `.vtk` (ASCII or binary) with all
+/// its point, cell and field arrays, and validates it. Throws xfem::Error naming the file and the
+/// first problem: unreadable file, no tets, a cell that is not a tet (named with its index and VTK
+/// type), a point index out of range, a non-finite coordinate, zero-volume tets (counted).
+/// Inverted tets are reoriented (nodes 1 and 2 swapped); each fix adds a line to `warnings`.
+TetMesh read_tet_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+/// Checks what read_tet_mesh checks on an in-memory mesh (`name` is used in messages). Returns
+/// the number of inverted tets it reoriented.
+int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::string>* warnings);
+
+/// Writes `mesh` as VTK XML `.vtu` (appended raw binary, zlib-compressed), atomically.
+void write_tet_mesh(const TetMesh& mesh, const std::string& path);
+
+/// Reads a triangulated surface (a cut) from `.vtp`, legacy `.vtk` (POLYDATA or
+/// UNSTRUCTURED_GRID of triangles), `.stl` (coincident points merged), `.obj` or `.off`, and
+/// validates it: triangles only (else the first bad cell is named), indices in range, finite
+/// coordinates, no empty surface, no edge shared by more than two triangles. Zero-area triangles
+/// are dropped and triangles whose orientation disagrees with their neighbours' are flipped (the
+/// lowest-numbered triangle of each connected piece keeps its orientation), each with a warning;
+/// a surface that cannot be oriented consistently (a Moebius strip) is an error.
+TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+/// Checks and repairs an in-memory surface as read_triangle_mesh does.
+void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::vector<std::string>* warnings);
+
+/// Writes `mesh` as VTK XML `.vtp`, atomically.
+void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path);
+
+}  // namespace xfem

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the toolchain builds and runs with; installs only what is missing.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev  # exact geometry, AABB trees, Mesh_3
+  libeigen3-dev                                    # dense and sparse linear algebra
+  libsuitesparse-dev libmetis-dev                  # CHOLMOD with METIS ordering
+  libvtk9-dev                                      # mesh I/O, point location, rendering
+  libpetsc-real-dev openmpi-bin                    # iterative, MPI-capable solve
+  catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
+  xvfb xauth gnuplot-nox                           # headless PNG snapshots, plots
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo=(sudo)
+else
+  echo "install-deps: error: missing packages (${missing[*]}); run as root or install sudo" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
