@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "xfem/crack_front.h"
+#include "xfem/cut_surface.h"
+#include "xfem/mesh.h"
+
+namespace xfem {
+
+/// What the numerical stages (assemble, visualize, rmserror) read of an xfem-enrich output: the
+/// mesh with its arrays, the decisions of xfem-classify and the DOF numbering of xfem-enrich
+/// (never recomputed), and the cut for H(x) and the crack-tip frames.
+struct EnrichedMesh {
+  TetMesh mesh;
+  std::vector<int> side;       ///< per point: H(P_m), +1 / -1 (array `side`)
+  std::vector<int> cut_class;  ///< per tet: 0 uncut, 1 partially cut, 2 completely cut
+  long np = 0, ns = 0, nb = 0, n = 0;  ///< N = NP + NS + 4 NB (array `dof_counts`)
+  std::vector<long> offsets;   ///< T+1 offsets into dofs/local (array `extended_offsets`)
+  std::vector<long> dofs;      ///< the paper's C, element after element (array `extended_dofs`)
+  std::vector<int> local;      ///< the paper's L (array `extended_local`)
+  CrackFront front;            ///< fields `front_segments`, `front_normals`
+  std::shared_ptr<const CutSurface> cut;
+
+  int tets() const { return static_cast<int>(mesh.tets.rows()); }
+  /// Number of entries of C for tet t (4 for a plain element).
+  int size(int t) const { return static_cast<int>(offsets[t + 1] - offsets[t]); }
+};
+
+/// Reads enriched.vtu (`vtu`) and the cut (`cut_path`) and checks the contract of
+/// docs/FORMATS.md: every array present with the right size, C and L consistent (ids < N, local
+/// ids 0..3). Throws xfem::Error naming the file and the array, e.g.
+/// "enriched.vtu: field array 'dof_counts' missing (is this xfem-enrich output?)".
+EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_path,
+                                std::vector<std::string>* warnings = nullptr);
+
+}  // namespace xfem
