@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "xfem/enriched_mesh.h"
 #include "xfem/mesh.h"
 
 namespace xfem {
@@ -39,5 +40,9 @@ RmsReport rms_error(const ReferenceSamples& reference, const FieldAt& field);
 /// with side s != 0 is evaluated in a tet on that side. `radius`: snapping distance, metres.
 FieldAt plain_field(const TetMesh& mesh, const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& u,
                     double radius);
+
+/// u_h of an X-FEM solution (`u`: 3N scalars) with the enriched displacement of DESIGN.md,
+/// evaluated on the point's side of the cut (side 0: decided by the cut surface).
+FieldAt xfem_field(const EnrichedMesh& mesh, const Eigen::VectorXd& u, double radius);
 
 }  // namespace xfem

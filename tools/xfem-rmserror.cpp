@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// RMS error of a solution against a reference solution (DESIGN.md, "The benchmark", RMS (5.1)).
+#include <cstdio>
+
+#include "xfem/cli.h"
+#include "xfem/enriched_mesh.h"
+#include "xfem/error.h"
+#include "xfem/json_io.h"
+#include "xfem/matrix_market.h"
+#include "xfem/rms_error.h"
+#include "xfem/version.h"
+#include "xfem/vtk_io.h"
+
+namespace {
+
+using Field = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// Nodal displacements of a plain mesh: the first NP 3-vectors of a solution vector, or the point
+// array `displacement` when no solution file is given.
+Field nodal_displacements(const xfem::TetMesh& mesh, const std::string& mesh_path, const std::string& solution) {
+  const Eigen::Index np = mesh.points.rows();
+  Field u(np, 3);
+  if (!solution.empty()) {
+    const Eigen::VectorXd v = xfem::read_vector(solution);
+    if (v.size() < 3 * np || v.size() % 3 != 0)
+      throw xfem::Error(solution + ": " + std::to_string(v.size()) + " values, expected 3 per vector and at least " +
+                        std::to_string(3 * np) + " for the " + std::to_string(np) + " points of " + mesh_path);
+    for (Eigen::Index k = 0; k < np; ++k) u.row(k) = v.segment<3>(3 * k).transpose();
+    return u;
+  }
+  const auto& a = xfem::require_array(mesh.point_data, "displacement", "point", 3, np, mesh_path,
+                                      "xfem-visualize (or give --solution)");
+  for (Eigen::Index k = 0; k < np; ++k) u.row(k) << a(k, 0), a(k, 1), a(k, 2);
+  return u;
+}
+
+std::vector<int> sides_of(const xfem::TetMesh& mesh) {
+  std::vector<int> side(mesh.points.rows(), 0);
+  const auto it = mesh.point_data.find("cut_side");
+  if (it != mesh.point_data.end() && it->second.components == 1)
+    for (std::size_t k = 0; k < side.size(); ++k) side[k] = static_cast<int>(it->second(k));
+  return side;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  auto tool = xfem::cli::make_tool(
+      "xfem-rmserror",
+      "RMS and max error of a solution against a reference solution, over the reference's nodes.\n"
+      "The solution is X-FEM (an xfem-enrich mesh, with --cut) or plain (any tet mesh). Prints the RMS on stdout.",
+      "xfem-rmserror out/enriched.vtu --cut cut.vtp --solution out/u.mtx \\\n"
+      "      --reference ref/enriched.vtu --reference-solution ref/u.mtx -o out/rms.json");
+  std::string mesh_path, cut_path, solution, reference, reference_solution, output;
+  double max_rms = -1, radius = -1;
+  auto& app = tool->app;
+  app.add_option("mesh", mesh_path, "mesh of the solution: xfem-enrich output (.vtu) or a plain tet mesh")->required();
+  app.add_option("--cut", cut_path, "cut surface, required for an X-FEM solution");
+  app.add_option("-s,--solution", solution, "solution vector u.mtx (default: the mesh's point array 'displacement')");
+  app.add_option("-r,--reference", reference, "reference mesh (.vtu/.vtk); point array 'cut_side' gives the side of "
+                                              "duplicated nodes")->required();
+  app.add_option("--reference-solution", reference_solution,
+                 "reference solution u.mtx (default: the reference's point array 'displacement')");
+  app.add_option("-o,--output", output, "JSON report");
+  app.add_option("--max", max_rms, "exit 1 when the RMS error exceeds this (metres): a golden-file check");
+  app.add_option("--radius", radius, "reference nodes outside the mesh but this close are evaluated at the nearest "
+                                     "tet (metres; default 1e-6 of the mesh's bounding-box diagonal)");
+  return xfem::cli::run(*tool, argc, argv, [&] {
+    const xfem::TetMesh ref_mesh = xfem::read_tet_mesh(reference);
+    const xfem::ReferenceSamples ref{ref_mesh.points, nodal_displacements(ref_mesh, reference, reference_solution),
+                                     sides_of(ref_mesh)};
+
+    xfem::TetMesh plain;
+    xfem::EnrichedMesh enriched;
+    Field plain_u;
+    Eigen::VectorXd u;
+    xfem::FieldAt field;
+    const bool is_xfem = [&] {
+      plain = xfem::read_tet_mesh(mesh_path);
+      return plain.field_data.count("extended_offsets") > 0;
+    }();
+    const double diagonal = (plain.points.colwise().maxCoeff() - plain.points.colwise().minCoeff()).norm();
+    if (radius < 0) radius = 1e-6 * diagonal;
+    if (is_xfem) {
+      if (cut_path.empty()) throw xfem::Error(mesh_path + ": an X-FEM mesh needs its cut (--cut)");
+      if (solution.empty()) throw xfem::Error(mesh_path + ": an X-FEM mesh needs its solution (--solution)");
+      enriched = xfem::read_enriched_mesh(mesh_path, cut_path);
+      u = xfem::read_vector(solution);
+      if (u.size() != 3 * enriched.n)
+        throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
+                          std::to_string(3 * enriched.n) + " for " + mesh_path);
+      field = xfem::xfem_field(enriched, u, radius);
+    } else {
+      plain_u = nodal_displacements(plain, mesh_path, solution);
+      field = xfem::plain_field(plain, plain_u, radius);
+    }
+    const xfem::RmsReport r = xfem::rms_error(ref, field);
+    if (r.compared == 0) throw xfem::Error(reference + ": no reference node lies in " + mesh_path);
+    if (r.outside > 0)
+      xfem::cli::warn(std::to_string(r.outside) + " reference nodes lie outside " + mesh_path +
+                      " beyond --radius and were left out");
+    xfem::cli::info("RMS " + std::to_string(r.rms) + " m, max " + std::to_string(r.max) + " m at reference node " +
+                    std::to_string(r.max_node) + "; " + std::to_string(r.compared) + " nodes compared, " +
+                    std::to_string(r.snapped) + " snapped");
+    xfem::Json report;
+    report["generator"] = std::string("xfem-rmserror ") + xfem::version;
+    report["mesh"] = mesh_path;
+    report["kind"] = is_xfem ? "xfem" : "plain";
+    report["reference"] = reference;
+    report["rms"] = r.rms;
+    report["max"] = r.max;
+    report["max_node"] = r.max_node;
+    report["relative_rms"] = r.reference_rms > 0 ? r.rms / r.reference_rms : 0.0;
+    report["reference_nodes"] = ref.points.rows();
+    report["compared"] = r.compared;
+    report["snapped"] = r.snapped;
+    report["outside"] = r.outside;
+    report["radius"] = radius;
+    report["n_vectors"] = is_xfem ? enriched.n : static_cast<long>(plain.points.rows());
+    report["n_unknowns"] = 3 * (is_xfem ? enriched.n : static_cast<long>(plain.points.rows()));
+    if (!output.empty()) xfem::write_json(report, output);
+    std::printf("%.17g\n", r.rms);
+    if (max_rms >= 0 && r.rms > max_rms)
+      throw xfem::Error("RMS error " + std::to_string(r.rms) + " exceeds --max " + std::to_string(max_rms));
+  });
+}
