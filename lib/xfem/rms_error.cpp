@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 
-#include "xfem/enriched_basis.h"
 #include "xfem/point_location.h"
 
 namespace xfem {
@@ -75,29 +74,6 @@ FieldAt plain_field(const TetMesh& mesh, const Eigen::Matrix<double, Eigen::Dyna
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
     for (int c = 0; c < 4; ++c) v += l[c] * u.row(mesh.tets(t, c)).transpose();
     return v;
-  };
-}
-
-FieldAt xfem_field(const EnrichedMesh& em, const Eigen::VectorXd& u, double radius) {
-  auto locator = std::make_shared<PointLocator>(em.mesh);
-  return [&em, &u, locator, radius](const Eigen::Vector3d& x, int side,
-                                    bool& snapped) -> std::optional<Eigen::Vector3d> {
-    snapped = false;
-    // The enriched field is continuous across element faces on each side of the cut, so any tet
-    // containing x gives the same value.
-    const auto candidates = locator->containing(x);
-    int t = candidates.empty() ? -1 : candidates.front();
-    Eigen::Vector3d at = x;
-    if (t < 0) {
-      t = locator->nearest(x, radius);
-      if (t < 0) return std::nullopt;
-      snapped = true;
-      Eigen::Vector4d l = locator->barycentric(t, x).cwiseMax(0.0);
-      l /= l.sum();
-      at.setZero();
-      for (int c = 0; c < 4; ++c) at += l[c] * em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    }
-    return displacement_at(em, t, at, side, u);
   };
 }
 
