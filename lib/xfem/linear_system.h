@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "xfem/json_io.h"
+#include "xfem/matrix_market.h"
+
+namespace xfem {
+
+/// One connected piece of the (possibly cut) body, as xfem-assemble sees it: the solver names a
+/// piece without a Dirichlet condition when the system is singular.
+struct Piece {
+  long tets = 0;            ///< tets (or tet halves) in the piece
+  bool constrained = false; ///< does any Dirichlet condition act on it?
+};
+
+/// The assembled system K u = f with its Dirichlet data (the contract between xfem-assemble and
+/// xfem-solve; the directory layout is documented in docs/FORMATS.md):
+///   K.mtx          Matrix Market `coordinate real symmetric`, 3N x 3N, lower triangle
+///   f.mtx          Matrix Market `array real general`, 3N x 1
+///   dirichlet.mtx  Matrix Market `coordinate real general`, 3N x 1: one entry per constrained
+///                  scalar DOF (row 3k + i + 1, the prescribed value in metres)
+///   system.json    np, ns, nb, n, dofs (= 3N), nonzeros, pieces, generator
+/// Scalar unknown of component i of the 3-vector U_k is 3k + i (docs/FORMATS.md).
+struct LinearSystem {
+  SparseMatrix K;                    ///< 3N x 3N; at least the lower triangle is filled
+  Eigen::VectorXd f;                 ///< 3N, newtons
+  std::vector<long> fixed;           ///< constrained scalar DOFs, strictly increasing
+  std::vector<double> fixed_values;  ///< prescribed values, metres, same order as `fixed`
+  long np = 0, ns = 0, nb = 0, n = 0; ///< N = NP + NS + 4 NB 3-vectors (paper 3.3)
+  std::vector<Piece> pieces;         ///< may be empty (unknown)
+};
+
+/// Writes `system` into directory `dir` (created if missing), every file atomically.
+/// `generator` goes into system.json ("xfem-assemble 0.1.0").
+void write_linear_system(const LinearSystem& system, const std::string& dir, const std::string& generator);
+
+/// Reads a directory written by write_linear_system and checks it is consistent (sizes agree
+/// with dofs = 3N, fixed DOFs in range). K comes back as its full symmetric matrix.
+/// Throws xfem::Error naming the file and the problem, e.g.
+/// "out/system/f.mtx: 12 rows, expected 3N = 24 (is this xfem-assemble output?)".
+LinearSystem read_linear_system(const std::string& dir);
+
+}  // namespace xfem
