@@ -6,10 +6,11 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev  # exact geometry, AABB trees, Mesh_3
   libeigen3-dev                                    # dense and sparse linear algebra
   libsuitesparse-dev libmetis-dev                  # CHOLMOD with METIS ordering
+  libopenblas0-pthread                             # fast BLAS for CHOLMOD (the reference BLAS is ~30x slower)
   libvtk9-dev                                      # mesh I/O, point location, rendering
   libpetsc-real-dev openmpi-bin                    # iterative, MPI-capable solve
   catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
-  xvfb xauth gnuplot-nox                           # headless PNG snapshots, plots
+  xvfb xauth gnuplot-nox python3                   # headless PNG snapshots, plots, tables
 )
 missing=()
 for p in "${packages[@]}"; do

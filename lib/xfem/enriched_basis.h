@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include "xfem/enriched_mesh.h"
+#include "xfem/tet_shape.h"
 
 namespace xfem {
 
@@ -18,7 +19,14 @@ struct BasisAt {
 /// `side` is H(x) to use (+1 / -1), so that a point on the cut can be evaluated on either face;
 /// 0 means "decide with the cut surface". With side given, a point on the cut plane behind the
 /// front gets theta = side * pi. The gradients of psi vanish (H is piecewise constant).
+/// Throws xfem::Error if a sign DOF needs H(x) with side 0 and no cut, or a branch DOF meets an
+/// empty front.
 void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side, BasisAt& out);
+
+/// The same with the tet's linear shape functions `shape` = tet_shape(em.mesh, t) computed once by
+/// the caller (integration evaluates many points of one tet).
+void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                    BasisAt& out);
 
 /// u_h(x) = sum over C of U_k Phi_k(x) in tet t, for the solution u (3N scalars, 3k + i).
 Eigen::Vector3d displacement_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,

@@ -22,7 +22,9 @@ struct Piece {
 ///   f.mtx          Matrix Market `array real general`, 3N x 1
 ///   dirichlet.mtx  Matrix Market `coordinate real general`, 3N x 1: one entry per constrained
 ///                  scalar DOF (row 3k + i + 1, the prescribed value in metres)
-///   system.json    np, ns, nb, n, dofs (= 3N), nonzeros, pieces, generator
+///   coordinates.mtx  optional, Matrix Market `array real general`, 3 NP x 1: entry 3k + i is
+///                  coordinate i of mesh point k in metres (the rigid-body modes for PETSc's GAMG)
+///   system.json    np, ns, nb, n, dofs (= 3N), nonzeros, fixed, pieces, coordinates, generator
 /// Scalar unknown of component i of the 3-vector U_k is 3k + i (docs/FORMATS.md).
 struct LinearSystem {
   SparseMatrix K;                    ///< 3N x 3N; at least the lower triangle is filled
@@ -31,11 +33,19 @@ struct LinearSystem {
   std::vector<double> fixed_values;  ///< prescribed values, metres, same order as `fixed`
   long np = 0, ns = 0, nb = 0, n = 0; ///< N = NP + NS + 4 NB 3-vectors (paper 3.3)
   std::vector<Piece> pieces;         ///< may be empty (unknown)
+  /// NP x 3 mesh point coordinates in metres (row k = point k = original 3-vector k), or empty
+  /// (0 x 3 / 0 x 0: unknown). Lets the PETSc backend build the rigid-body near-null space.
+  Eigen::MatrixXd coordinates;
 };
 
 /// Writes `system` into directory `dir` (created if missing), every file atomically.
 /// `generator` goes into system.json ("xfem-assemble 0.1.0").
 void write_linear_system(const LinearSystem& system, const std::string& dir, const std::string& generator);
+
+/// Checks `system` is consistent (N = NP + NS + 4 NB, K square 3N x 3N, f 3N, fixed strictly
+/// increasing and < 3N, one value per fixed DOF, coordinates NP x 3 or empty); throws
+/// xfem::Error naming `where` and the problem. write/read call it.
+void check_linear_system(const LinearSystem& system, const std::string& where);
 
 /// Reads a directory written by write_linear_system and checks it is consistent (sizes agree
 /// with dofs = 3N, fixed DOFs in range). K comes back as its full symmetric matrix.

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/cholmod_solver.h"
+
+#include <cholmod.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace xfem {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// cholmod_start / cholmod_finish and the factor, released on every path (exceptions included).
+struct Session {
+  cholmod_common c;
+  cholmod_factor* L = nullptr;
+  Session() { cholmod_start(&c); }
+  ~Session() {
+    if (L) cholmod_free_factor(&L, &c);
+    cholmod_finish(&c);
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+}  // namespace
+
+CholmodResult cholmod_solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, Ordering ordering) {
+  if (A_in.rows() != A_in.cols() || A_in.rows() != b.size())
+    throw Error("cholmod_solve: matrix " + std::to_string(A_in.rows()) + " x " + std::to_string(A_in.cols()) +
+                " and right-hand side of size " + std::to_string(b.size()) + " do not match");
+  if (!A_in.isCompressed()) throw Error("cholmod_solve: the matrix must be in compressed storage");
+  // A view of Eigen's compressed columns (int indices, sorted): CHOLMOD reads the lower triangle
+  // (stype -1) and ignores the rest, so neither a copy nor a triangle extraction is needed.
+  SparseMatrix& A = const_cast<SparseMatrix&>(A_in);  // CHOLMOD's API is not const; it does not write
+  cholmod_sparse a{};
+  a.nrow = a.ncol = static_cast<size_t>(A.rows());
+  a.nzmax = static_cast<size_t>(A.nonZeros());
+  a.p = A.outerIndexPtr();
+  a.i = A.innerIndexPtr();
+  a.x = A.valuePtr();
+  a.stype = -1;
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+
+  Session s;
+  s.c.print = 0;  // the caller reports failures in its own words
+  s.c.supernodal = CHOLMOD_SUPERNODAL;
+  s.c.nmethods = 1;
+  s.c.method[0].ordering = ordering == Ordering::Metis ? CHOLMOD_METIS : CHOLMOD_AMD;
+  s.c.postorder = 1;
+
+  CholmodResult r;
+  r.ordering = ordering == Ordering::Metis ? "metis" : "amd";
+  auto t0 = std::chrono::steady_clock::now();
+  s.L = cholmod_analyze(&a, &s.c);
+  if (!s.L && ordering == Ordering::Metis && s.c.status == CHOLMOD_NOT_INSTALLED) {
+    s.c.status = CHOLMOD_OK;
+    s.c.method[0].ordering = CHOLMOD_AMD;
+    r.ordering = "amd";
+    s.L = cholmod_analyze(&a, &s.c);
+  }
+  if (!s.L || s.c.status < CHOLMOD_OK)
+    throw Error("CHOLMOD analysis failed (status " + std::to_string(s.c.status) +
+                (s.c.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory)" : ")"));
+  r.analyze_seconds = seconds_since(t0);
+  r.factor_nonzeros = s.c.lnz;
+  r.flops = s.c.fl;
+
+  t0 = std::chrono::steady_clock::now();
+  cholmod_factorize(&a, s.L, &s.c);
+  r.factor_seconds = seconds_since(t0);
+  if (s.c.status == CHOLMOD_NOT_POSDEF || s.L->minor < s.L->n) {
+    const long minor = static_cast<long>(s.L->minor);
+    const long column = s.L->Perm ? static_cast<const int*>(s.L->Perm)[minor] : minor;
+    throw NotPositiveDefinite("the matrix is not positive definite: the Cholesky factorization broke down at column " +
+                                  std::to_string(column) + " (step " + std::to_string(minor) + " of " +
+                                  std::to_string(s.L->n) + ")",
+                              column);
+  }
+  if (s.c.status < CHOLMOD_OK)
+    throw Error("CHOLMOD factorization failed (status " + std::to_string(s.c.status) +
+                (s.c.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory)" : ")"));
+  r.supernodal = s.L->is_super != 0;
+  r.rcond = cholmod_rcond(s.L, &s.c);
+
+  t0 = std::chrono::steady_clock::now();
+  cholmod_dense rhs{};
+  rhs.nrow = static_cast<size_t>(b.size());
+  rhs.ncol = 1;
+  rhs.nzmax = rhs.d = rhs.nrow;
+  rhs.x = const_cast<double*>(b.data());
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, s.L, &rhs, &s.c);
+  if (!x) throw Error("CHOLMOD solve failed (status " + std::to_string(s.c.status) + ")");
+  r.x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), b.size());
+  cholmod_free_dense(&x, &s.c);
+  r.solve_seconds = seconds_since(t0);
+  if (!r.x.allFinite()) throw Error("CHOLMOD returned a non-finite solution (the matrix is numerically singular)");
+  return r;
+}
+
+}  // namespace xfem

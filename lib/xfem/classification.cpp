@@ -1,0 +1,360 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/classification.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <thread>
+#include <unordered_map>
+
+#include "xfem/error.h"
+
+namespace xfem {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Segment = Kernel::Segment_3;
+using SegmentIterator = std::vector<Segment>::const_iterator;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment_primitive<Kernel, SegmentIterator>>>;
+
+// Local edges of a tet (i < j) and, for the face opposite vertex k, its three local edges.
+constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+constexpr int kFaceEdges[4][3] = {{3, 4, 5}, {1, 2, 5}, {0, 2, 4}, {0, 1, 3}};
+
+/// Runs body(begin, end) over [0, n) in a few threads. Every index is computed independently, so
+/// the result does not depend on the thread count. `progress` is reported by the first thread.
+void parallel_for(long n, const std::function<void(long, long)>& body,
+                  const std::function<void(double)>& progress = {}) {
+  const long chunk = 4096;
+  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
+  std::atomic<long> next{0};
+  auto work = [&](bool report) {
+    for (long b; (b = next.fetch_add(chunk)) < n;) {
+      body(b, std::min(n, b + chunk));
+      if (report && progress) progress(static_cast<double>(std::min(n, b + chunk)) / n);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work, false);
+  work(true);
+  for (auto& t : pool) t.join();
+}
+
+Kernel::Point_3 to_cgal(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+std::array<int, 3> face_key(const TetMesh& m, int t, int opposite) {
+  std::array<int, 3> f;
+  int n = 0;
+  for (int k = 0; k < 4; ++k)
+    if (k != opposite) f[n++] = m.tets(t, k);
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+struct FaceHash {
+  std::size_t operator()(const std::array<int, 3>& f) const {
+    return std::hash<std::uint64_t>()((static_cast<std::uint64_t>(f[0]) * 73856093u) ^
+                                      (static_cast<std::uint64_t>(f[1]) * 19349663u) ^
+                                      (static_cast<std::uint64_t>(f[2]) * 83492791u));
+  }
+};
+
+/// The front (rule D4 and the orientation of crack_front.h): each boundary edge of the cut is
+/// clipped to the candidate tets (cut tets and their node neighbours: a front inside the body
+/// runs through them), the pieces of one edge merged, and pieces lying on the body's surface
+/// dropped.
+CrackFront extract_front(const TetMesh& mesh, const CutSurface& cut, const std::vector<char>& candidate) {
+  const auto& edges = cut.boundary_edges();
+  if (edges.empty()) return {};
+  const TriangleMesh& cm = cut.mesh();
+  std::vector<Segment> segments;
+  for (const auto& e : edges)
+    segments.emplace_back(to_cgal(cm.points.row(e.p0).transpose()), to_cgal(cm.points.row(e.p1).transpose()));
+  SegmentTree tree(segments.cbegin(), segments.cend());
+
+  struct Piece {
+    int edge;
+    double t0, t1;
+    std::array<int, 3> face;  // a face the piece lies on ({-1,..} if inside the tet)
+  };
+  std::vector<Piece> pieces;
+  std::vector<SegmentTree::Primitive_id> hits;
+  constexpr double eps = 1e-10;  // barycentric tolerance: a piece this close to a face lies on it
+  for (int t = 0; t < mesh.tets.rows(); ++t) {
+    if (!candidate[t]) continue;
+    Eigen::Vector3d P[4];
+    CGAL::Bbox_3 box;
+    for (int k = 0; k < 4; ++k) {
+      P[k] = mesh.points.row(mesh.tets(t, k)).transpose();
+      box += to_cgal(P[k]).bbox();
+    }
+    hits.clear();
+    tree.all_intersected_primitives(box, std::back_inserter(hits));
+    if (hits.empty()) continue;
+    Eigen::Matrix3d J;
+    J << P[1] - P[0], P[2] - P[0], P[3] - P[0];
+    const Eigen::Matrix3d Jinv = J.inverse();
+    auto bary = [&](const Eigen::Vector3d& x) {
+      const Eigen::Vector3d l = Jinv * (x - P[0]);
+      return Eigen::Vector4d(1 - l.sum(), l[0], l[1], l[2]);
+    };
+    std::sort(hits.begin(), hits.end());
+    for (const auto& h : hits) {
+      const int e = static_cast<int>(h - segments.cbegin());
+      const Eigen::Vector3d a = cm.points.row(edges[e].p0).transpose(), b = cm.points.row(edges[e].p1).transpose();
+      const Eigen::Vector4d la = bary(a), lb = bary(b);
+      // Liang-Barsky on the 4 half-spaces lambda_k >= 0 along a + s (b - a), s in [0, 1]. An edge
+      // running along a face plane (lambda_k constant) is kept if it lies on it within eps: a
+      // front exactly on a face belongs to the tets on both sides.
+      double s0 = 0, s1 = 1;
+      for (int k = 0; k < 4 && s0 <= s1; ++k) {
+        const double d = lb[k] - la[k];
+        if (std::abs(d) <= eps) {
+          if (std::max(la[k], lb[k]) < -eps) s0 = 2;
+        } else if (d > 0) {
+          s0 = std::max(s0, -la[k] / d);
+        } else {
+          s1 = std::min(s1, -la[k] / d);
+        }
+      }
+      if (!(s1 - s0 > 1e-9)) continue;  // a point contact or nothing: no piece of front
+      const Eigen::Vector4d lm = bary(a + 0.5 * (s0 + s1) * (b - a));
+      Piece p{e, s0, s1, {-1, -1, -1}};
+      for (int k = 0; k < 4; ++k)
+        if (std::abs(lm[k]) <= eps) p.face = face_key(mesh, t, k);
+      pieces.push_back(p);
+    }
+  }
+  // D4: pieces on a face of the body's surface (a face of one tet only) are dropped.
+  std::unordered_map<std::array<int, 3>, int, FaceHash> face_use;
+  for (const Piece& p : pieces)
+    if (p.face[0] >= 0) face_use[p.face] = 0;
+  if (!face_use.empty())
+    for (int t = 0; t < mesh.tets.rows(); ++t)
+      for (int k = 0; k < 4; ++k) {
+        const auto it = face_use.find(face_key(mesh, t, k));
+        if (it != face_use.end()) ++it->second;
+      }
+  std::vector<Piece> kept;
+  for (const Piece& p : pieces)
+    if (p.face[0] < 0 || face_use[p.face] >= 2) kept.push_back(p);
+  std::sort(kept.begin(), kept.end(), [](const Piece& x, const Piece& y) {
+    return x.edge != y.edge ? x.edge < y.edge : x.t0 < y.t0;
+  });
+  std::vector<FrontSegment> front;
+  for (std::size_t i = 0; i < kept.size();) {
+    const int e = kept[i].edge;
+    double s0 = kept[i].t0, s1 = kept[i].t1;
+    std::size_t j = i + 1;
+    for (; j < kept.size() && kept[j].edge == e && kept[j].t0 <= s1 + 1e-9; ++j) s1 = std::max(s1, kept[j].t1);
+    const Eigen::Vector3d a = cm.points.row(edges[e].p0).transpose(), b = cm.points.row(edges[e].p1).transpose();
+    // The owning triangle traverses its edge counter-clockwise about n: the triangle lies to the
+    // left, n x (b - a) points into the cut. Reversing the edge makes a = b x c point away.
+    FrontSegment seg;
+    seg.p0 = a + s1 * (b - a);
+    seg.p1 = a + s0 * (b - a);
+    seg.b = cut.unit_normal(edges[e].triangle);
+    front.push_back(seg);
+    i = j;
+  }
+  return CrackFront(std::move(front));
+}
+
+}  // namespace
+
+Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options) {
+  const long V = mesh.points.rows(), T = mesh.tets.rows();
+  Classification c;
+  auto report = [&](double lo, double hi) {
+    return options.progress ? std::function<void(double)>([&, lo, hi](double f) { options.progress(lo + (hi - lo) * f); })
+                            : std::function<void(double)>();
+  };
+
+  // 1. Points: on the cut (exactly, D1) and side H.
+  c.side.assign(V, 1);
+  c.on_cut.assign(V, 0);
+  parallel_for(V, [&](long b, long e) {
+    const std::vector<int> s = cut.sides(mesh.points, b, e);
+    std::copy(s.begin(), s.end(), c.side.begin() + b);
+    for (long i = b; i < e; ++i) {
+      const Eigen::Vector3d x = mesh.points.row(i).transpose();
+      c.on_cut[i] = cut.meets_segment(x, x);
+    }
+  }, report(0.0, 0.3));
+
+  // 2. Unique edges, each tested once (D2 for edges with an end point on the cut).
+  std::vector<std::uint64_t> keys;
+  keys.reserve(6 * T);
+  for (long t = 0; t < T; ++t)
+    for (const auto& e : kEdge) keys.push_back(edge_key(mesh.tets(t, e[0]), mesh.tets(t, e[1])));
+  std::vector<std::uint64_t> unique = keys;
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  std::vector<char> edge_cut(unique.size(), 0);
+  parallel_for(static_cast<long>(unique.size()), [&](long b, long e) {
+    for (long i = b; i < e; ++i) {
+      const int p = static_cast<int>(unique[i] >> 32), q = static_cast<int>(unique[i] & 0xffffffffu);
+      if (c.on_cut[p] || c.on_cut[q])
+        edge_cut[i] = c.side[p] != c.side[q];
+      else
+        edge_cut[i] = cut.meets_segment(mesh.points.row(p).transpose(), mesh.points.row(q).transpose());
+    }
+  }, report(0.3, 0.9));
+
+  // 3. Tets: cut edges, completely cut faces, class.
+  c.cut_edges.assign(T, 0);
+  c.cut_faces.assign(T, 0);
+  c.cut_class.assign(T, CutClass::Uncut);
+  parallel_for(T, [&](long b, long e) {
+    for (long t = b; t < e; ++t) {
+      bool cut_edge[6];
+      int n = 0;
+      for (int k = 0; k < 6; ++k) {
+        const auto it = std::lower_bound(unique.begin(), unique.end(), keys[6 * t + k]);
+        cut_edge[k] = edge_cut[it - unique.begin()];
+        n += cut_edge[k];
+      }
+      int faces = 0;
+      for (const auto& f : kFaceEdges) faces += cut_edge[f[0]] + cut_edge[f[1]] + cut_edge[f[2]] >= 2;
+      c.cut_edges[t] = n;
+      c.cut_faces[t] = faces;
+      c.cut_class[t] = n == 0 ? CutClass::Uncut : faces >= 3 ? CutClass::Complete : CutClass::Partial;
+    }
+  });
+
+  // 4. Enrichment: branch for nodes of partially cut tets, sign (D3) for the other nodes of
+  //    completely cut tets.
+  c.enrichment.assign(V, Enrichment::None);
+  std::vector<char> in_complete(V, 0);
+  for (long t = 0; t < T; ++t) {
+    if (c.cut_class[t] == CutClass::Partial)
+      for (int k = 0; k < 4; ++k) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
+    if (c.cut_class[t] != CutClass::Complete) continue;
+    for (int k = 0; k < 4; ++k) {
+      const int m = mesh.tets(t, k);
+      in_complete[m] = std::max<char>(in_complete[m], 1);
+      for (int j = 0; j < 4; ++j) {
+        const int o = mesh.tets(t, j);
+        if (c.side[o] != c.side[m] && !c.on_cut[o]) in_complete[m] = 2;
+      }
+    }
+  }
+  for (long m = 0; m < V; ++m)
+    if (c.enrichment[m] == Enrichment::None && in_complete[m] == 2) c.enrichment[m] = Enrichment::Sign;
+    else if (c.enrichment[m] == Enrichment::None && in_complete[m] == 1) ++c.counts.sign_dropped;
+
+  // 5. The front, from the tets near the cut.
+  std::vector<char> near_node(V, 0), candidate(T, 0);
+  for (long t = 0; t < T; ++t)
+    if (c.cut_class[t] != CutClass::Uncut)
+      for (int k = 0; k < 4; ++k) near_node[mesh.tets(t, k)] = 1;
+  for (long t = 0; t < T; ++t)
+    for (int k = 0; k < 4; ++k) candidate[t] |= near_node[mesh.tets(t, k)];
+  c.front = extract_front(mesh, cut, candidate);
+  const long partial = std::count(c.cut_class.begin(), c.cut_class.end(), CutClass::Partial);
+  if (partial > 0 && c.front.empty())
+    throw Error("cut: " + std::to_string(partial) +
+                " partially cut tets but no cut front inside the body (the crack-tip frames of their "
+                "branch nodes are undefined)");
+
+  // 6. Optional radius enrichment around the front.
+  if (options.tip_radius > 0 && !c.front.empty()) {
+    for (long m = 0; m < V; ++m) {
+      if (c.enrichment[m] == Enrichment::Branch) continue;
+      const Eigen::Vector3d x = mesh.points.row(m).transpose();
+      const FrontSegment& s = c.front.segments()[c.front.closest_segment(x)];
+      const Eigen::Vector3d d = s.p1 - s.p0;
+      const double u = std::clamp((x - s.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      if ((s.p0 + u * d - x).norm() <= options.tip_radius) {
+        ++c.counts.radius_branch;
+        c.enrichment[m] = Enrichment::Branch;
+      }
+    }
+  }
+
+  // 7. Counts.
+  auto& n = c.counts;
+  n.points = V;
+  n.tets = T;
+  n.edges = static_cast<long>(unique.size());
+  n.cut_edges = std::count(edge_cut.begin(), edge_cut.end(), 1);
+  n.points_on_cut = std::count(c.on_cut.begin(), c.on_cut.end(), 1);
+  n.uncut = std::count(c.cut_class.begin(), c.cut_class.end(), CutClass::Uncut);
+  n.partial = partial;
+  n.complete = T - n.uncut - partial;
+  n.sign = std::count(c.enrichment.begin(), c.enrichment.end(), Enrichment::Sign);
+  n.branch = std::count(c.enrichment.begin(), c.enrichment.end(), Enrichment::Branch);
+  n.none = V - n.sign - n.branch;
+  n.front_segments = static_cast<long>(c.front.segments().size());
+  if (options.progress) options.progress(1.0);
+  return c;
+}
+
+Classification classify_without_cut(const TetMesh& mesh) {
+  const long V = mesh.points.rows(), T = mesh.tets.rows();
+  Classification c;
+  c.side.assign(V, 1);
+  c.on_cut.assign(V, 0);
+  c.enrichment.assign(V, Enrichment::None);
+  c.cut_class.assign(T, CutClass::Uncut);
+  c.cut_edges.assign(T, 0);
+  c.cut_faces.assign(T, 0);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(6 * T);
+  for (long t = 0; t < T; ++t)
+    for (const auto& e : kEdge) keys.push_back(edge_key(mesh.tets(t, e[0]), mesh.tets(t, e[1])));
+  std::sort(keys.begin(), keys.end());
+  c.counts.edges = std::unique(keys.begin(), keys.end()) - keys.begin();
+  c.counts.points = c.counts.none = V;
+  c.counts.tets = c.counts.uncut = T;
+  return c;
+}
+
+std::vector<std::string> count_names() {
+  return {"points", "tets", "edges", "cut_edges", "points_on_cut", "uncut", "partial", "complete",
+          "none", "sign", "branch", "sign_dropped", "radius_branch", "front_segments"};
+}
+
+std::vector<long> count_values(const Classification::Counts& n) {
+  return {n.points, n.tets,   n.edges, n.cut_edges, n.points_on_cut, n.uncut,         n.partial,
+          n.complete, n.none, n.sign,  n.branch,    n.sign_dropped,  n.radius_branch, n.front_segments};
+}
+
+void store_classification(const Classification& c, TetMesh& mesh) {
+  const std::size_t V = mesh.points.rows(), T = mesh.tets.rows();
+  if (c.side.size() != V || c.cut_class.size() != T)
+    throw Error("store_classification: classification does not match the mesh");
+  DataArray side = make_array(DataArray::Type::Int32, 1, V), enr = make_array(DataArray::Type::Int32, 1, V);
+  for (std::size_t i = 0; i < V; ++i) {
+    side.values[i] = c.side[i];
+    enr.values[i] = static_cast<int>(c.enrichment[i]);
+  }
+  DataArray cls = make_array(DataArray::Type::Int32, 1, T), edges = make_array(DataArray::Type::Int32, 1, T);
+  for (std::size_t t = 0; t < T; ++t) {
+    cls.values[t] = static_cast<int>(c.cut_class[t]);
+    edges.values[t] = c.cut_edges[t];
+  }
+  mesh.point_data["side"] = std::move(side);
+  mesh.point_data["enrichment"] = std::move(enr);
+  mesh.cell_data["cut_class"] = std::move(cls);
+  mesh.cell_data["cut_edges"] = std::move(edges);
+  store_front(c.front, mesh);
+  const auto values = count_values(c.counts);
+  DataArray counts = make_array(DataArray::Type::Int64, 1, values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) counts.values[i] = static_cast<double>(values[i]);
+  mesh.field_data["classification_counts"] = std::move(counts);
+}
+
+}  // namespace xfem

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/deformed_mesh.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "xfem/enriched_basis.h"
+#include "xfem/error.h"
+
+namespace xfem {
+
+DisplacementField xfem_displacement(const EnrichedMesh& em, const Eigen::VectorXd& u) {
+  DisplacementField f;
+  f.value = [&em, &u](int t, const Eigen::Vector3d& x, int side) { return displacement_at(em, t, x, side, u); };
+  f.gradient = [&em, &u](int t, const Eigen::Vector3d& x, int side) {
+    return displacement_gradient_at(em, t, x, side, u);
+  };
+  return f;
+}
+
+double von_mises(const Eigen::Matrix3d& s) {
+  const double d = (s(0, 0) - s(1, 1)) * (s(0, 0) - s(1, 1)) + (s(1, 1) - s(2, 2)) * (s(1, 1) - s(2, 2)) +
+                   (s(2, 2) - s(0, 0)) * (s(2, 2) - s(0, 0));
+  const double shear = s(0, 1) * s(0, 1) + s(1, 2) * s(1, 2) + s(0, 2) * s(0, 2);
+  return std::sqrt(0.5 * d + 3.0 * shear);
+}
+
+DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
+                           double E, double nu, const std::function<void(double)>& progress) {
+  if (!(E > 0)) throw Error("deformed_body: Young's modulus E must be positive, got " + std::to_string(E));
+  if (!(nu > -1 && nu < 0.5)) throw Error("deformed_body: Poisson's ratio nu must be in (-1, 0.5), got " + std::to_string(nu));
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const Eigen::Index np = split.points.rows(), nt = split.tets.rows();
+
+  DeformedBody out;
+  TetMesh& v = out.volume;
+  v.points = split.points;
+  v.tets = split.tets;
+  DataArray disp = make_array(DataArray::Type::Float64, 3, np);
+  DataArray point_side = make_array(DataArray::Type::Int32, 1, np);
+  const Eigen::Index work = np + nt;
+  for (Eigen::Index k = 0; k < np; ++k) {
+    const Eigen::Vector3d x = split.points.row(k).transpose();
+    const Eigen::Vector3d d = u.value(split.point_tet[k], x, split.point_side[k]);
+    if (!d.allFinite())
+      throw Error("deformed_body: displacement at point " + std::to_string(k) + " (in tet " +
+                  std::to_string(split.point_tet[k]) + ") is not finite");
+    for (int c = 0; c < 3; ++c) disp.values[3 * k + c] = d[c];
+    point_side.values[k] = split.point_side[k];
+    if (progress && k % 4096 == 0) progress(static_cast<double>(k) / work);
+  }
+
+  DataArray cls = make_array(DataArray::Type::Int32, 1, nt), side = make_array(DataArray::Type::Int32, 1, nt),
+            parent = make_array(DataArray::Type::Int64, 1, nt), strain = make_array(DataArray::Type::Float64, 6, nt),
+            stress = make_array(DataArray::Type::Float64, 6, nt), vm = make_array(DataArray::Type::Float64, 1, nt);
+  for (Eigen::Index t = 0; t < nt; ++t) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
+    const int p = split.parent[t];
+    const Eigen::Matrix3d G = u.gradient(p, centroid, split.tet_side[t]);
+    const Eigen::Matrix3d eps = 0.5 * (G + G.transpose());
+    const Eigen::Matrix3d sigma = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2 * mu * eps;
+    // VTK's order of a symmetric tensor's 6 components (as ParaView reads them).
+    static const int kI[6] = {0, 1, 2, 0, 1, 0}, kJ[6] = {0, 1, 2, 1, 2, 2};
+    for (int c = 0; c < 6; ++c) {
+      strain.values[6 * t + c] = eps(kI[c], kJ[c]);
+      stress.values[6 * t + c] = sigma(kI[c], kJ[c]);
+    }
+    vm.values[t] = von_mises(sigma);
+    cls.values[t] = cut_class[p];
+    side.values[t] = split.tet_side[t];
+    parent.values[t] = p;
+    if (progress && t % 4096 == 0) progress(static_cast<double>(np + t) / work);
+  }
+  v.point_data["displacement"] = disp;
+  v.point_data["side"] = point_side;
+  v.cell_data["cut_class"] = cls;
+  v.cell_data["side"] = side;
+  v.cell_data["parent"] = parent;
+  v.cell_data["strain"] = strain;
+  v.cell_data["stress"] = stress;
+  v.cell_data["von_mises"] = vm;
+
+  // The wound keeps only the points its triangles use, renumbered in order of first use.
+  std::vector<int> renumber(np, -1);
+  std::vector<int> used;
+  TriangleMesh& w = out.wound;
+  w.triangles.resize(split.wound.rows(), 3);
+  for (Eigen::Index f = 0; f < split.wound.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      int& id = renumber[split.wound(f, c)];
+      if (id < 0) {
+        id = static_cast<int>(used.size());
+        used.push_back(split.wound(f, c));
+      }
+      w.triangles(f, c) = id;
+    }
+  w.points.resize(static_cast<Eigen::Index>(used.size()), 3);
+  DataArray wdisp = make_array(DataArray::Type::Float64, 3, used.size());
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    w.points.row(static_cast<Eigen::Index>(i)) = split.points.row(used[i]);
+    for (int c = 0; c < 3; ++c) wdisp.values[3 * i + c] = disp.values[3 * used[i] + c];
+  }
+  DataArray wside = make_array(DataArray::Type::Int32, 1, split.wound_side.size());
+  for (std::size_t f = 0; f < split.wound_side.size(); ++f) wside.values[f] = split.wound_side[f];
+  w.point_data["displacement"] = wdisp;
+  w.cell_data["side"] = wside;
+  if (progress) progress(1.0);
+  return out;
+}
+
+CutOpening cut_opening(const SplitMesh& split, const DataArray& displacement,
+                       const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& normal) {
+  // The two copies of a point are made from the same coordinates, so they compare equal exactly.
+  std::map<std::array<double, 3>, std::array<int, 2>> copies;
+  for (Eigen::Index k = 0; k < split.points.rows(); ++k) {
+    if (split.point_side[k] == 0) continue;
+    auto& c = copies.try_emplace({split.points(k, 0), split.points(k, 1), split.points(k, 2)}, std::array<int, 2>{-1, -1})
+                  .first->second;
+    c[split.point_side[k] > 0 ? 0 : 1] = static_cast<int>(k);
+  }
+  CutOpening o;
+  double sum = 0;
+  for (const auto& [x, c] : copies) {
+    if (c[0] < 0 || c[1] < 0) continue;
+    Eigen::Vector3d d;
+    for (int i = 0; i < 3; ++i) d[i] = displacement(c[0], i) - displacement(c[1], i);
+    const double dn = d.dot(normal(Eigen::Vector3d(x[0], x[1], x[2])));
+    o.min_normal = o.pairs == 0 ? dn : std::min(o.min_normal, dn);
+    o.max_normal = o.pairs == 0 ? dn : std::max(o.max_normal, dn);
+    o.max_jump = std::max(o.max_jump, d.norm());
+    sum += dn;
+    ++o.pairs;
+  }
+  if (o.pairs > 0) o.mean_normal = sum / o.pairs;
+  return o;
+}
+
+}  // namespace xfem

@@ -1,0 +1,381 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/element_split.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "xfem/error.h"
+
+namespace xfem {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Segment = Kernel::Segment_3;
+using Triangle = Kernel::Triangle_3;
+using TriangleIterator = std::vector<Triangle>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Point to_cgal(const Eigen::Vector3d& p) { return Point(p[0], p[1], p[2]); }
+
+// Edge points are kept off the edge's nodes by this fraction of the edge: a cut through a node
+// would otherwise give zero-volume pieces. The shift is far below any visible scale.
+constexpr double kEdgeClamp = 1e-9;
+
+// Front segments reach this fraction of their length beyond their ends when faces are pierced.
+constexpr double kFrontReach = 1e-6;
+
+// A point of an element's subdivision before it gets an output id: a mesh node, an edge point,
+// a face (front) point or the element's centre M.
+enum Kind { Node = 0, EdgePoint = 1, FacePoint = 2, Centre = 3 };
+struct Ref {
+  Kind kind;
+  int index;
+};
+
+struct FaceTriangle {
+  std::array<Ref, 3> v;
+  int side;  // +1 / -1, 0 where it spans both sides (ahead of the front)
+};
+
+// The state of one split: caches of edge and front points (shared by the tets around an edge or
+// face) and the new points. A plain struct used by split_mesh only.
+struct Splitter {
+  Splitter(const TetMesh& mesh, const std::vector<int>& side, const TriangleMesh& cut,
+           const std::vector<FrontSegment>& front)
+      : mesh_(mesh), side_(side), cut_(cut), front_(front) {
+    for (Eigen::Index f = 0; f < cut.triangles.rows(); ++f)
+      triangles_.emplace_back(to_cgal(cut.points.row(cut.triangles(f, 0))), to_cgal(cut.points.row(cut.triangles(f, 1))),
+                              to_cgal(cut.points.row(cut.triangles(f, 2))));
+    if (!triangles_.empty()) {
+      tree_.insert(triangles_.begin(), triangles_.end());
+      tree_.build();
+    }
+  }
+
+  Eigen::Vector3d node(int k) const { return mesh_.points.row(k).transpose(); }
+
+  // Index into edge_points_ of the split point of edge (a, b), -1 when the edge is not split.
+  int edge_point(int a, int b) {
+    if (a > b) std::swap(a, b);
+    const auto key = std::make_pair(a, b);
+    const auto it = edges_.find(key);
+    if (it != edges_.end()) return it->second;
+    int result = -1;
+    if (side_[a] != side_[b] && !triangles_.empty()) {
+      const Eigen::Vector3d pa = node(a), pb = node(b), d = pb - pa;
+      std::vector<TriangleIterator> hits;
+      tree_.all_intersected_primitives(Segment(to_cgal(pa), to_cgal(pb)), std::back_inserter(hits));
+      double best = 2.0;
+      for (const auto& h : hits) {
+        const int f = static_cast<int>(h - triangles_.begin());
+        const Eigen::Vector3d p0 = cut_.points.row(cut_.triangles(f, 0)).transpose();
+        const Eigen::Vector3d n = (cut_.points.row(cut_.triangles(f, 1)).transpose() - p0)
+                                      .cross(cut_.points.row(cut_.triangles(f, 2)).transpose() - p0);
+        const double den = n.dot(d);
+        if (den == 0.0) continue;  // the edge lies in the triangle's plane: not a crossing
+        best = std::min(best, std::clamp(n.dot(p0 - pa) / den, 0.0, 1.0));
+      }
+      if (best <= 1.0) {
+        best = std::clamp(best, kEdgeClamp, 1.0 - kEdgeClamp);
+        result = static_cast<int>(edge_points_.size());
+        edge_points_.push_back(pa + best * d);
+      }
+    }
+    edges_.emplace(key, result);
+    return result;
+  }
+
+  // Index into face_points_ of the point where the cut front pierces face (a, b, c), -1 if none.
+  int face_point(std::array<int, 3> f) {
+    std::sort(f.begin(), f.end());
+    const auto it = faces_.find(f);
+    if (it != faces_.end()) return it->second;
+    const Eigen::Vector3d p0 = node(f[0]), p1 = node(f[1]), p2 = node(f[2]);
+    const Triangle tri(to_cgal(p0), to_cgal(p1), to_cgal(p2));
+    const Eigen::Vector3d n = (p1 - p0).cross(p2 - p0);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (const auto& s : front_) {
+      // Fronts are clipped to the body, so a front ending on a boundary face may stop a rounding
+      // error short of it: each segment is lengthened by kFrontReach of its length at both ends.
+      const Eigen::Vector3d a = s.p0 - kFrontReach * (s.p1 - s.p0), b = s.p1 + kFrontReach * (s.p1 - s.p0);
+      if (!CGAL::do_intersect(tri, Segment(to_cgal(a), to_cgal(b)))) continue;
+      const double den = n.dot(b - a);
+      if (den == 0.0) continue;  // front segment lying in the face: no single piercing point
+      sum += a + std::clamp(n.dot(p0 - a) / den, 0.0, 1.0) * (b - a);
+      ++count;  // a front vertex on the face is reported by both its segments: averaged
+    }
+    int result = -1;
+    if (count > 0) {
+      result = static_cast<int>(face_points_.size());
+      face_points_.push_back(sum / count);
+    }
+    faces_.emplace(f, result);
+    return result;
+  }
+
+  int common_side(std::initializer_list<int> nodes) const {
+    const int s = side_[*nodes.begin()];
+    for (int k : nodes)
+      if (side_[k] != s) return 0;
+    return s;
+  }
+
+  // Triangulates face (a, b, c) from its own edge and front points only, so that both tets sharing
+  // it triangulate it alike; appends the cut's segments on it to `crack`.
+  void split_face(int a, int b, int c, std::vector<FaceTriangle>& out, std::vector<std::array<Ref, 2>>& crack) {
+    const std::array<int, 3> v = {a, b, c};
+    std::array<int, 3> e;  // e[i]: point of edge (v[i], v[i+1])
+    int split = 0;
+    for (int i = 0; i < 3; ++i) {
+      e[i] = edge_point(v[i], v[(i + 1) % 3]);
+      if (e[i] >= 0) ++split;
+    }
+    auto N = [](int k) { return Ref{Node, k}; };
+    auto E = [](int k) { return Ref{EdgePoint, k}; };
+    if (split == 0) {
+      out.push_back({{N(a), N(b), N(c)}, common_side({a, b, c})});
+    } else if (split == 2) {
+      // The lone node L is the one both split edges meet at; P, Q are the others.
+      int i = 0;
+      while (!(e[i] >= 0 && e[(i + 2) % 3] >= 0)) ++i;
+      const int L = v[i], P = v[(i + 1) % 3], Q = v[(i + 2) % 3];
+      const Ref EP = E(e[i]), EQ = E(e[(i + 2) % 3]);
+      out.push_back({{N(L), EP, EQ}, side_[L]});
+      if (P < Q) {
+        out.push_back({{EP, N(P), EQ}, side_[P]});
+        out.push_back({{N(P), N(Q), EQ}, side_[P]});
+      } else {
+        out.push_back({{EP, N(P), N(Q)}, side_[P]});
+        out.push_back({{EP, N(Q), EQ}, side_[P]});
+      }
+      crack.push_back({EP, EQ});
+    } else {
+      int i = 0;
+      while (e[i] < 0) ++i;
+      const int X = v[i], Y = v[(i + 1) % 3], Z = v[(i + 2) % 3];
+      const Ref EX = E(e[i]);
+      const int fp = face_point({a, b, c});
+      if (fp >= 0) {
+        const Ref F{FacePoint, fp};
+        out.push_back({{F, N(X), EX}, side_[X]});
+        out.push_back({{F, EX, N(Y)}, side_[Y]});
+        out.push_back({{F, N(Y), N(Z)}, common_side({Y, Z})});
+        out.push_back({{F, N(Z), N(X)}, common_side({Z, X})});
+        crack.push_back({EX, F});
+      } else {
+        std::array<int, 3> key = v;
+        std::sort(key.begin(), key.end());
+        degenerate_.insert(key);
+        out.push_back({{EX, N(Y), N(Z)}, common_side({Y, Z})});
+        out.push_back({{N(X), EX, N(Z)}, common_side({X, Z})});
+      }
+    }
+  }
+
+  // Output id of a point copy; nodes keep their own id, other points one id per (point, side).
+  int output_id(const Ref& r, int side, int tet, const std::array<int, 3>& centre_ids) {
+    if (r.kind == Node) return r.index;
+    if (r.kind == Centre) return centre_ids[side + 1];
+    if (r.kind == FacePoint) side = 0;  // on the front: both sides meet there
+    const auto key = std::make_tuple(static_cast<int>(r.kind), r.index, side);
+    const auto it = copies_.find(key);
+    if (it != copies_.end()) return it->second;
+    const int id = add_point(r.kind == EdgePoint ? edge_points_[r.index] : face_points_[r.index], side, tet);
+    copies_.emplace(key, id);
+    return id;
+  }
+
+  int add_point(const Eigen::Vector3d& x, int side, int tet) {
+    points_.push_back(x);
+    point_side_.push_back(side);
+    point_tet_.push_back(tet);
+    return static_cast<int>(mesh_.points.rows() + points_.size()) - 1;  // new points follow the nodes
+  }
+
+  const TetMesh& mesh_;
+  const std::vector<int>& side_;
+  const TriangleMesh& cut_;
+  const std::vector<FrontSegment>& front_;
+  std::vector<Triangle> triangles_;
+  Tree tree_;
+  std::map<std::pair<int, int>, int> edges_;
+  std::map<std::array<int, 3>, int> faces_;
+  std::set<std::array<int, 3>> degenerate_;
+  std::map<std::tuple<int, int, int>, int> copies_;
+  std::vector<Eigen::Vector3d> edge_points_, face_points_;
+  std::vector<Eigen::Vector3d> points_;  // new points (after the NP nodes)
+  std::vector<int> point_side_, point_tet_;
+};
+
+}  // namespace
+
+SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
+                     const TriangleMesh& cut, const std::vector<FrontSegment>& front) {
+  const int np = static_cast<int>(mesh.points.rows()), nt = static_cast<int>(mesh.tets.rows());
+  if (static_cast<int>(side.size()) != np)
+    throw Error("split_mesh: " + std::to_string(side.size()) + " point sides for " + std::to_string(np) + " points");
+  if (static_cast<int>(cut_class.size()) != nt)
+    throw Error("split_mesh: " + std::to_string(cut_class.size()) + " cut classes for " + std::to_string(nt) + " tets");
+  for (int k = 0; k < np; ++k)
+    if (side[k] != 1 && side[k] != -1)
+      throw Error("split_mesh: point " + std::to_string(k) + " has side " + std::to_string(side[k]) + ", expected +1 or -1");
+  for (int t = 0; t < nt; ++t)
+    if (cut_class[t] < 0 || cut_class[t] > 2)
+      throw Error("split_mesh: tet " + std::to_string(t) + " has cut class " + std::to_string(cut_class[t]) +
+                  ", expected 0, 1 or 2");
+
+  Splitter s(mesh, side, cut, front);
+  // Each node's field is evaluated in the first tet that holds it.
+  std::vector<int> node_tet(np, -1);
+  for (int t = nt - 1; t >= 0; --t)
+    for (int c = 0; c < 4; ++c) node_tet[mesh.tets(t, c)] = t;
+
+  SplitMesh out;
+  std::vector<std::array<int, 4>> tets;
+  std::vector<std::array<int, 3>> wound;
+  auto position = [&](int id) -> Eigen::Vector3d {
+    return id < np ? s.node(id) : s.points_[id - np];
+  };
+  auto add_tet = [&](std::array<int, 4> v, int parent, int tet_side) {
+    if (signed_volume(position(v[0]), position(v[1]), position(v[2]), position(v[3])) < 0) std::swap(v[1], v[2]);
+    tets.push_back(v);
+    out.parent.push_back(parent);
+    out.tet_side.push_back(tet_side);
+  };
+
+  static const int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  for (int t = 0; t < nt; ++t) {
+    const std::array<int, 4> v = {mesh.tets(t, 0), mesh.tets(t, 1), mesh.tets(t, 2), mesh.tets(t, 3)};
+    bool any_split = false;
+    bool closed = true;  // every edge between nodes of opposite sides is split
+    Eigen::Vector3d edge_sum = Eigen::Vector3d::Zero();
+    int edge_count = 0;
+    if (cut_class[t] > 0)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          if (side[v[i]] == side[v[j]]) continue;
+          const int e = s.edge_point(v[i], v[j]);
+          if (e < 0) {
+            closed = false;
+            continue;
+          }
+          any_split = true;
+          edge_sum += s.edge_points_[e];
+          ++edge_count;
+        }
+    if (!any_split) {
+      add_tet(v, t, 0);
+      continue;
+    }
+
+    // 1. The faces, triangulated alike from both sides, and the cut's segments on them.
+    std::vector<FaceTriangle> triangles;
+    std::vector<std::array<Ref, 2>> crack;
+    for (const auto& f : kFaces) s.split_face(v[f[0]], v[f[1]], v[f[2]], triangles, crack);
+
+    // 2. The centre M: on the cut inside the element; on the front when the element is split only
+    // behind it. Kept strictly inside the tet so that every cone tet has positive volume.
+    Eigen::Vector3d centre = edge_sum / edge_count;
+    if (!closed) {
+      Eigen::Vector3d front_sum = Eigen::Vector3d::Zero();
+      int front_count = 0;
+      for (const auto& tri : triangles)
+        for (const auto& r : tri.v)
+          if (r.kind == FacePoint) {
+            front_sum += s.face_points_[r.index];
+            ++front_count;
+          }
+      // Every face point appears in four fan triangles of its face: the mean is unaffected.
+      if (front_count > 0) centre = front_sum / front_count;
+    }
+    {
+      Eigen::Matrix3d J;
+      for (int c = 0; c < 3; ++c) J.col(c) = s.node(v[c + 1]) - s.node(v[0]);
+      const Eigen::Vector3d l = J.partialPivLu().solve(centre - s.node(v[0]));
+      const double l0 = 1.0 - l.sum();
+      if (std::min({l0, l[0], l[1], l[2]}) < 1e-3) {
+        const Eigen::Vector3d centroid = (s.node(v[0]) + s.node(v[1]) + s.node(v[2]) + s.node(v[3])) / 4;
+        centre = 0.5 * (centre + centroid);
+      }
+    }
+    std::array<int, 3> centre_ids{};  // per side -1, 0, +1
+    if (closed) {
+      centre_ids[0] = s.add_point(centre, -1, t);
+      centre_ids[1] = centre_ids[2];  // unused: every face triangle of a crossed element has a side
+      centre_ids[2] = s.add_point(centre, 1, t);
+      ++out.split_complete;
+    } else {
+      centre_ids[0] = centre_ids[1] = centre_ids[2] = s.add_point(centre, 0, t);
+      ++out.split_partial;
+    }
+
+    // 3. Cone every face triangle to M; each cone takes its face triangle's side.
+    for (const auto& tri : triangles) {
+      std::array<int, 4> ids;
+      for (int c = 0; c < 3; ++c) ids[c] = s.output_id(tri.v[c], tri.side, t, centre_ids);
+      ids[3] = centre_ids[tri.side + 1];
+      add_tet(ids, t, tri.side);
+    }
+
+    // 4. The wound: the fan from M over the cut's segments, once per side, each oriented out of its
+    // side's piece (towards the other side).
+    Eigen::Vector3d above = Eigen::Vector3d::Zero(), below = Eigen::Vector3d::Zero();
+    int n_above = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (side[v[c]] > 0) {
+        above += s.node(v[c]);
+        ++n_above;
+      } else {
+        below += s.node(v[c]);
+      }
+    }
+    const Eigen::Vector3d up = above / n_above - below / (4 - n_above);
+    for (const auto& seg : crack)
+      for (int sd : {1, -1}) {
+        std::array<int, 3> w = {centre_ids[sd + 1], s.output_id(seg[0], sd, t, centre_ids),
+                                s.output_id(seg[1], sd, t, centre_ids)};
+        const Eigen::Vector3d n = (position(w[1]) - position(w[0])).cross(position(w[2]) - position(w[0]));
+        if (sd * n.dot(up) > 0) std::swap(w[1], w[2]);
+        wound.push_back(w);
+        out.wound_side.push_back(sd);
+      }
+  }
+
+  const int total = np + static_cast<int>(s.points_.size());
+  out.points.resize(total, 3);
+  out.point_side.resize(total);
+  out.point_tet.resize(total);
+  for (int k = 0; k < np; ++k) {
+    out.points.row(k) = mesh.points.row(k);
+    out.point_side[k] = side[k];
+    out.point_tet[k] = node_tet[k];
+  }
+  for (int k = np; k < total; ++k) {
+    out.points.row(k) = s.points_[k - np].transpose();
+    out.point_side[k] = s.point_side_[k - np];
+    out.point_tet[k] = s.point_tet_[k - np];
+  }
+  out.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t i = 0; i < tets.size(); ++i)
+    for (int c = 0; c < 4; ++c) out.tets(static_cast<Eigen::Index>(i), c) = tets[i][c];
+  out.wound.resize(static_cast<Eigen::Index>(wound.size()), 3);
+  for (std::size_t i = 0; i < wound.size(); ++i)
+    for (int c = 0; c < 3; ++c) out.wound(static_cast<Eigen::Index>(i), c) = wound[i][c];
+  out.degenerate_faces = static_cast<int>(s.degenerate_.size());
+  return out;
+}
+
+}  // namespace xfem

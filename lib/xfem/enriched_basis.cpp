@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/enriched_basis.h"
+
+#include <string>
+
+#include "xfem/branch_functions.h"
+#include "xfem/error.h"
+#include "xfem/heaviside.h"
+
+namespace xfem {
+
+void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                    BasisAt& out) {
+  const long begin = em.offsets[t];
+  const int n = em.size(t);
+  out.N.resize(n);
+  out.dN.resize(n, 3);
+  const Eigen::Vector4d N = shape.values(x);
+  // H(x) and the ACTFs are computed once per point, and only if a DOF of this tet needs them.
+  int h = side;
+  bool have_branch = false;
+  BranchValues F;
+  for (int k = 0; k < n; ++k) {
+    const long dof = em.dofs[begin + k];
+    const int l = em.local[begin + k];
+    if (dof < em.np) {
+      out.N[k] = N[l];
+      out.dN.row(k) = shape.grad.row(l);
+    } else if (dof < em.np + em.ns) {
+      if (h == 0) {
+        if (!em.cut) throw Error("tet " + std::to_string(t) + ": sign DOF " + std::to_string(dof) + " needs the cut surface");
+        h = em.cut->side(x);
+      }
+      const double psi = shifted_heaviside(h, em.side[em.mesh.tets(t, l)]);
+      out.N[k] = N[l] * psi;
+      out.dN.row(k) = psi * shape.grad.row(l);  // grad psi = 0 away from the cut
+    } else {
+      if (!have_branch) {
+        if (em.front.empty())
+          throw Error("tet " + std::to_string(t) + ": branch DOF " + std::to_string(dof) + " but the cut has no front");
+        F = branch_functions(em.front.frame(x), x, side);
+        have_branch = true;
+      }
+      const int j = static_cast<int>((dof - em.np - em.ns) % 4);
+      out.N[k] = N[l] * F.F[j];
+      out.dN.row(k) = F.F[j] * shape.grad.row(l) + N[l] * F.dF.row(j);
+    }
+  }
+}
+
+void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side, BasisAt& out) {
+  enriched_basis(em, t, tet_shape(em.mesh, t), x, side, out);
+}
+
+Eigen::Vector3d displacement_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
+                                const Eigen::VectorXd& u) {
+  BasisAt b;
+  enriched_basis(em, t, x, side, b);
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+  const long begin = em.offsets[t];
+  for (int k = 0; k < b.N.size(); ++k) value += b.N[k] * u.segment<3>(3 * em.dofs[begin + k]);
+  return value;
+}
+
+Eigen::Matrix3d displacement_gradient_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
+                                         const Eigen::VectorXd& u) {
+  BasisAt b;
+  enriched_basis(em, t, x, side, b);
+  Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
+  const long begin = em.offsets[t];
+  for (int k = 0; k < b.N.size(); ++k) grad += u.segment<3>(3 * em.dofs[begin + k]) * b.dN.row(k);
+  return grad;
+}
+
+}  // namespace xfem

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/pieces.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+#include "xfem/error.h"
+
+namespace xfem {
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void join(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest id: stable order
+  }
+};
+
+}  // namespace
+
+std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& node_constrained) {
+  const int nt = m.tets(), nv = static_cast<int>(m.mesh.points.rows());
+  if (static_cast<int>(m.cut_class.size()) != nt)
+    throw Error("find_pieces: " + std::to_string(m.cut_class.size()) + " cut classes for " + std::to_string(nt) + " tets");
+  if (static_cast<int>(m.side.size()) != nv || static_cast<int>(node_constrained.size()) != nv)
+    throw Error("find_pieces: side/constraint arrays do not match the " + std::to_string(nv) + " points");
+  // Part ids: 2t for tet t (the half above the cut if t is completely cut), 2t + 1 the half below.
+  const auto complete = [&](int t) { return m.cut_class[t] == 2; };
+  const auto part_on = [&](int t, int side) { return complete(t) && side < 0 ? 2 * t + 1 : 2 * t; };
+  UnionFind uf(2 * nt);
+
+  // 1. Faces shared by two tets: sorted node triples, equal neighbours after sorting.
+  std::vector<std::array<int, 4>> faces;  // 3 sorted nodes + tet
+  faces.reserve(4 * static_cast<std::size_t>(nt));
+  for (int t = 0; t < nt; ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 4> f{};
+      int k = 0;
+      for (int c = 0; c < 4; ++c)
+        if (c != skip) f[k++] = m.mesh.tets(t, c);
+      std::sort(f.begin(), f.begin() + 3);
+      f[3] = t;
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  for (std::size_t k = 0; k + 1 < faces.size(); ++k) {
+    const auto &a = faces[k], &b = faces[k + 1];
+    if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) continue;
+    int t1 = a[3], t2 = b[3];
+    if (complete(t2)) std::swap(t1, t2);  // t1 is the completely cut one, if any
+    if (!complete(t1)) {
+      uf.join(2 * t1, 2 * t2);
+    } else if (complete(t2) || m.cut_class[t2] == 1) {
+      // Both halves meet a neighbour's same-side half (complete) or its single part (partial).
+      uf.join(2 * t1, 2 * t2);
+      uf.join(2 * t1 + 1, part_on(t2, -1));
+    } else {
+      // An uncut tet has no cut edge, so the shared face lies on one side: its nodes' side.
+      const int s = m.side[a[0]] + m.side[a[1]] + m.side[a[2]];
+      uf.join(part_on(t1, s >= 0 ? 1 : -1), 2 * t2);
+    }
+  }
+
+  // 2. Pieces in order of their lowest part id (roots are the lowest ids).
+  std::vector<int> piece_of(2 * nt, -1);
+  std::vector<Piece> pieces;
+  for (int id = 0; id < 2 * nt; ++id) {
+    if (id % 2 == 1 && !complete(id / 2)) continue;  // not a part
+    const int root = uf.find(id);
+    if (piece_of[root] < 0) {
+      piece_of[root] = static_cast<int>(pieces.size());
+      pieces.emplace_back();
+    }
+    ++pieces[piece_of[root]].tets;
+  }
+  // 3. A constrained node holds the part on its own side of every tet around it.
+  for (int t = 0; t < nt; ++t)
+    for (int c = 0; c < 4; ++c) {
+      const int v = m.mesh.tets(t, c);
+      if (node_constrained[v]) pieces[piece_of[uf.find(part_on(t, m.side[v]))]].constrained = true;
+    }
+  return pieces;
+}
+
+}  // namespace xfem

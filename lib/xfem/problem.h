@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Dense>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "xfem/json_io.h"
+#include "xfem/mesh.h"
+
+namespace xfem {
+
+/// Which mesh nodes a boundary condition acts on (problem.json, docs/FORMATS.md).
+struct Selector {
+  enum class Kind { HalfSpaces, Box, PointArray };
+  Kind kind = Kind::HalfSpaces;
+  /// HalfSpaces: node x selected when (x - point) . normal > 0 strictly for every plane (the
+  /// convention of the paper's code). Normals need not be unit vectors.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> planes;  ///< (point, normal), metres
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< Box: lo <= x <= hi (closed)
+  std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero
+};
+
+/// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
+/// enriched DOFs stay free). A missing (null) component is left free.
+struct DirichletCondition {
+  std::string name;  ///< optional, for messages
+  Selector selector;
+  std::array<std::optional<double>, 3> value;  ///< metres
+};
+
+/// Traction on the boundary faces whose three nodes are all selected, Pa (N/m^2).
+struct NeumannCondition {
+  std::string name;
+  Selector selector;
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();
+};
+
+/// A static linear-elastic problem: the contents of problem.json (docs/FORMATS.md).
+struct Problem {
+  std::string file;     ///< where it was read from, for messages
+  double E = 0.0;       ///< Young's modulus, Pa, > 0
+  double nu = 0.0;      ///< Poisson's ratio, in (-1, 0.5)
+  int points = 30;      ///< oversampling points requested per enriched tet (paper: 30 for the beam)
+  int refine = 0;       ///< levels of refinement at the cut in cut tets (0 = the paper's rule)
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<NeumannCondition> neumann;
+  Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
+};
+
+/// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
+/// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
+/// refine outside 0..8, a zero normal, an empty box, e.g. "problem.json: material.E must be positive, got -3".
+Problem read_problem(const std::string& path);
+/// The same from parsed JSON; `file` names it in messages.
+Problem parse_problem(const Json& j, const std::string& file);
+
+/// Ids of the nodes `selector` selects, increasing. `what` names the condition in messages, e.g.
+/// "problem.json: dirichlet[1] ('pulled edge')". Throws xfem::Error "<what> selects no node", or
+/// when a named point array is missing or has more than one component.
+std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
+
+/// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
+std::string describe(const Problem& p, const char* list, std::size_t i);
+
+}  // namespace xfem

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# xfem-solve: CLI contract, CHOLMOD residual, exact Dirichlet values, PETSc (1 and 2 MPI ranks)
+# agreeing with CHOLMOD, and each singular case refused with its message.
+set -u
+S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
+SOLVE=$XFEM_BIN/xfem-solve; DATA=$XFEM_SOURCE/test/data/solve
+fail() { echo "FAIL: $*"; exit 1; }
+expect_error() {  # expect_error <text> <args...>: exit 1, "error:" and <text> on stderr, no output file
+  local text=$1; shift
+  rm -f "$S/bad.mtx"
+  "$SOLVE" "$@" -o "$S/bad.mtx" 2>"$S/err.txt"; local rc=$?
+  [ $rc -eq 1 ] || fail "expected exit 1, got $rc for $*: $(cat "$S/err.txt")"
+  grep -q "error:" "$S/err.txt" || fail "no error: line for $*"
+  grep -qF -- "$text" "$S/err.txt" || fail "expected '$text' for $*, got: $(cat "$S/err.txt")"
+  [ ! -e "$S/bad.mtx" ] || fail "output left behind for $*"
+}
+maxdiff() { paste <(tail -n +3 "$1") <(tail -n +3 "$2") | awk '{d=$1-$2; if(d<0)d=-d; if(d>m)m=d} END{printf "%.3g\n", m+0}'; }
+
+"$SOLVE" --help >/dev/null || fail "--help"
+"$SOLVE" --no-such-flag 2>/dev/null; [ $? -eq 2 ] || fail "bad flag must exit 2"
+"$SOLVE" "$DATA/beam_1x2x4" -o "$S/u.mtx" --backend nonsense 2>/dev/null; [ $? -eq 2 ] || fail "bad backend must exit 2"
+
+# Bad inputs.
+expect_error "no such directory" "$S/missing"
+mkdir -p "$S/empty"; expect_error "system.json: cannot open" "$S/empty"
+cp -r "$DATA/beam_1x2x4" "$S/short_f"; printf '%%%%MatrixMarket matrix array real general\n2 1\n0\n0\n' >"$S/short_f/f.mtx"
+expect_error "f.mtx: 2 rows, expected 3N = 90" "$S/short_f"
+
+# CHOLMOD: residual below 1e-10, Dirichlet values exact (the pulled edge at 0.02, the fixed face 0).
+"$SOLVE" -q "$DATA/beam_1x2x4" -o "$S/u.mtx" --report "$S/solve.json" || fail "cholmod solve"
+res=$(sed -n 's/.*"relative_residual": *\([^,]*\).*/\1/p' "$S/solve.json")
+awk -v r="$res" 'BEGIN{exit !(r < 1e-10)}' || fail "CHOLMOD residual $res >= 1e-10"
+tail -n +4 "$DATA/beam_1x2x4/dirichlet.mtx" >"$S/fixed.txt"
+awk 'NR==FNR{want[$1]=$3; next} FNR>2 && ((FNR-2) in want) && $1+0 != want[FNR-2]+0 {print "DOF " FNR-2 ": " $1 " != " want[FNR-2]; bad=1} END{exit bad}' \
+  "$S/fixed.txt" "$S/u.mtx" || fail "Dirichlet values not exact"
+grep -c '^0.02$' "$S/u.mtx" | grep -qx 3 || fail "expected the 3 pulled-edge nodes (x = 0, z = 0.2) at exactly 0.02"
+
+# Singular cases.
+cp -r "$DATA/beam_1x2x4" "$S/free"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 0\n' >"$S/free/dirichlet.mtx"
+expect_error "no Dirichlet condition" "$S/free"
+cp -r "$DATA/beam_1x2x4" "$S/loose"
+sed -i '/"pieces"/,$d' "$S/loose/system.json"
+printf '  "pieces": [{"tets": 48, "constrained": true}, {"tets": 1234, "constrained": false}]\n}\n' >>"$S/loose/system.json"
+expect_error "the body falls apart into 2 pieces; piece 2 (1234 tets) has no Dirichlet condition" "$S/loose"
+cp -r "$DATA/beam_1x2x4" "$S/onenode"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 3\n1 1 0\n2 1 0\n3 1 0\n' >"$S/onenode/dirichlet.mtx"
+expect_error "K is not positive definite at DOF" "$S/onenode"
+"$SOLVE" "$DATA/beam_1x2x4_tiny" -o "$S/u_tiny.mtx" 2>"$S/err.txt" || fail "tiny support must still solve"
+grep -q "warning: 3 enriched DOFs have a diagonal below" "$S/err.txt" || fail "no tiny-support warning: $(cat "$S/err.txt")"
+"$SOLVE" "$DATA/beam_1x2x4_tiny" -o "$S/u_drop.mtx" --drop-tiny-enrichment 1e-6 2>"$S/err.txt" || fail "drop"
+grep -q "dropped 3 enriched DOFs" "$S/err.txt" || fail "no drop message"
+[ "$(tail -n 3 "$S/u_drop.mtx" | tr '\n' ' ')" = "0 0 0 " ] || fail "dropped DOFs must be 0"
+
+# PETSc: agrees with CHOLMOD within its tolerance, on 1 and 2 MPI ranks.
+if ! "$SOLVE" --version | grep -q petsc; then
+  echo "SKIP PETSc part: xfem-solve was built without PETSc"; exit 0
+fi
+"$SOLVE" -q "$DATA/beam_1x2x4" -o "$S/u_petsc1.mtx" --backend petsc --rtol 1e-10 || fail "petsc 1 rank"
+d=$(maxdiff "$S/u.mtx" "$S/u_petsc1.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-9 * 0.02 * 100)}' || fail "PETSc (1) differs by $d"
+if command -v mpirun >/dev/null; then
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$SOLVE" -q "$DATA/beam_1x2x4" -o "$S/u_petsc2.mtx" --backend petsc \
+    --rtol 1e-10 || fail "petsc 2 ranks"
+  d=$(maxdiff "$S/u.mtx" "$S/u_petsc2.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-9 * 0.02 * 100)}' || fail "PETSc (2) differs by $d"
+else
+  echo "SKIP mpirun part: no mpirun"
+fi
+rm -rf "$S"
+echo "solve e2e: ok"

@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/classification.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "xfem/box_mesh.h"
+#include "xfem/dof_numbering.h"
+#include "xfem/error.h"
+#include "xfem/unstructured_mesh.h"
+
+using xfem::CutClass;
+using xfem::Enrichment;
+
+namespace {
+
+/// The rectangle [x0, x1] x [y0, y1] in the plane z, as two triangles with normal +z.
+xfem::TriangleMesh rectangle(double x0, double x1, double y0, double y1, double z) {
+  xfem::TriangleMesh m;
+  m.points.resize(4, 3);
+  m.points << x0, y0, z, x1, y0, z, x0, y1, z, x1, y1, z;
+  m.triangles.resize(2, 3);
+  m.triangles << 0, 1, 3, 0, 3, 2;
+  return m;
+}
+
+xfem::TetMesh single_tet(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3) {
+  xfem::TetMesh m;
+  m.points.resize(4, 3);
+  m.points.row(0) << 0, 0, 0;
+  m.points.row(1) = p1;
+  m.points.row(2) = p2;
+  m.points.row(3) = p3;
+  m.tets.resize(1, 4);
+  m.tets << 0, 1, 2, 3;
+  return m;
+}
+
+/// The paper's beam cut (DESIGN.md): z = 0.1 for x <= 0.015, beyond the body on three sides.
+xfem::TriangleMesh beam_cut() { return rectangle(-0.01, 0.015, -0.01, 0.07, 0.1); }
+
+template <class E>
+std::vector<int> ints(const std::vector<E>& v) {
+  std::vector<int> out;
+  for (E e : v) out.push_back(static_cast<int>(e));
+  return out;
+}
+
+double front_length(const xfem::CrackFront& f) {
+  double l = 0;
+  for (const auto& s : f.segments()) l += (s.p1 - s.p0).norm();
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("classification: a tet cut completely with a 1|3 split", "[classification]") {
+  const auto mesh = single_tet({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  const xfem::CutSurface cut(rectangle(-1, 2, -1, 2, 0.5));
+  const auto c = xfem::classify(mesh, cut);
+  CHECK(c.side == std::vector<int>{-1, -1, -1, 1});
+  CHECK(c.cut_edges[0] == 3);  // the three edges to the apex
+  CHECK(c.cut_faces[0] == 3);
+  CHECK(c.cut_class[0] == CutClass::Complete);
+  CHECK(c.enrichment == std::vector<Enrichment>(4, Enrichment::Sign));
+  CHECK(c.front.empty());  // the rectangle's boundary lies outside the body
+  CHECK(c.counts.complete == 1);
+  CHECK(c.counts.cut_edges == 3);
+}
+
+TEST_CASE("classification: a tet cut completely with a 2|2 split", "[classification]") {
+  const auto mesh = single_tet({1, 0, 0}, {0, 1, 1}, {0, 0, 1});
+  REQUIRE(xfem::signed_volume(mesh, 0) > 0);
+  const xfem::CutSurface cut(rectangle(-1, 2, -1, 2, 0.5));
+  const auto c = xfem::classify(mesh, cut);
+  CHECK(c.side == std::vector<int>{-1, -1, 1, 1});
+  CHECK(c.cut_edges[0] == 4);  // all but 0-1 (z = 0) and 2-3 (z = 1)
+  CHECK(c.cut_faces[0] == 4);
+  CHECK(c.cut_class[0] == CutClass::Complete);
+  CHECK(c.counts.sign == 4);
+}
+
+TEST_CASE("classification: a tet cut partially, front inside", "[classification]") {
+  const auto mesh = single_tet({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  // z = 0.5 for x <= 0.1: cuts edges 0-3 (at x = 0) and 2-3 (at x = 0, y = 0.5), misses 1-3
+  // (crossing at x = 0.5). One completely cut face (0, 2, 3): partially cut.
+  const xfem::CutSurface cut(rectangle(-1, 0.1, -1, 2, 0.5));
+  const auto c = xfem::classify(mesh, cut);
+  CHECK(c.cut_edges[0] == 2);
+  CHECK(c.cut_faces[0] == 1);
+  CHECK(c.cut_class[0] == CutClass::Partial);
+  CHECK(c.enrichment == std::vector<Enrichment>(4, Enrichment::Branch));
+  // The front: x = 0.1 in the section z = 0.5 (x, y >= 0, x + y <= 0.5), i.e. y in [0, 0.4],
+  // oriented so that a = b x c = +x points away from the cut: b = +z, c = -y.
+  REQUIRE(c.front.segments().size() == 1);
+  const auto& s = c.front.segments()[0];
+  CHECK(s.p0.isApprox(Eigen::Vector3d(0.1, 0.4, 0.5), 1e-12));
+  CHECK(s.p1.isApprox(Eigen::Vector3d(0.1, 0.0, 0.5), 1e-12));
+  CHECK(s.b.isApprox(Eigen::Vector3d(0, 0, 1)));
+  CHECK(c.front.frame(Eigen::Vector3d(0.2, 0.1, 0.5)).R.col(0).isApprox(Eigen::Vector3d(1, 0, 0)));
+  const auto d = xfem::dof_numbering(mesh.tets, 4, {2, 2, 2, 2}, {1});
+  CHECK((d.np == 4 && d.ns == 0 && d.nb == 4 && d.n == 20));
+}
+
+TEST_CASE("classification: a 3D analogue of figure 2 with sign, branch and blending tets", "[classification]") {
+  // Three unit cubes along x, cut z = 0.5 for x <= 1.5: cube 0 completely cut, the front in
+  // cube 1, cube 2 uncut. Edges cross z = 0.5 only if they join z = 0 and z = 1, at their
+  // midpoint; cut iff that midpoint has x <= 1.5.
+  const auto mesh = xfem::box_mesh({3, 1, 1}, {0, 0, 0}, {3, 1, 1});
+  const xfem::CutSurface cut(rectangle(-1, 1.5, -1, 2, 0.5));
+  const auto c = xfem::classify(mesh, cut);
+  auto P = [&](int i) { return Eigen::Vector3d(mesh.points.row(i).transpose()); };
+  long branch_in_uncut = 0;
+  for (int t = 0; t < mesh.tets.rows(); ++t) {
+    int edges = 0;
+    double xmin = 9, xmax = -9;
+    for (int i = 0; i < 4; ++i) {
+      xmin = std::min(xmin, P(mesh.tets(t, i)).x());
+      xmax = std::max(xmax, P(mesh.tets(t, i)).x());
+      for (int j = i + 1; j < 4; ++j) {
+        const auto a = P(mesh.tets(t, i)), b = P(mesh.tets(t, j));
+        edges += a.z() != b.z() && (a.x() + b.x()) / 2 <= 1.5;
+      }
+    }
+    CAPTURE(t);
+    CHECK(c.cut_edges[t] == edges);
+    if (xmax <= 1) CHECK(c.cut_class[t] == CutClass::Complete);  // cube 0
+    if (xmin >= 2) CHECK(c.cut_class[t] == CutClass::Uncut);     // cube 2
+    if (c.cut_class[t] == CutClass::Partial) CHECK((xmin == 1 && xmax == 2));
+    if (c.cut_class[t] == CutClass::Uncut)
+      for (int i = 0; i < 4; ++i) branch_in_uncut += c.enrichment[mesh.tets(t, i)] == Enrichment::Branch;
+  }
+  CHECK(c.counts.partial > 0);
+  CHECK(branch_in_uncut > 0);  // uncut blending tets in cube 2
+  // Nodes: x = 0 sign; x = 1 and x = 2 are in partially cut tets of cube 1 (each of its tets
+  // holds the diagonal (1,0,0)-(2,1,1), so all of them share those two nodes); x = 3 none.
+  for (int i = 0; i < mesh.points.rows(); ++i) {
+    CAPTURE(i);
+    const double x = P(i).x();
+    if (x == 0) CHECK(c.enrichment[i] == Enrichment::Sign);
+    if (x == 3) CHECK(c.enrichment[i] == Enrichment::None);
+    CHECK(c.side[i] == (P(i).z() > 0.5 ? 1 : -1));
+  }
+  CHECK(c.enrichment[1] == Enrichment::Branch);   // (1, 0, 0)
+  CHECK(c.enrichment[14] == Enrichment::Branch);  // (2, 1, 1)
+  CHECK_THAT(front_length(c.front), Catch::WithinAbs(1.0, 1e-12));  // x = 1.5, y in [0, 1]
+  // The numbering is consistent with the counts: N = NP + NS + 4 NB.
+  const auto d = xfem::dof_numbering(mesh.tets, mesh.points.rows(), ints(c.enrichment), ints(c.cut_class));
+  CHECK(d.ns == c.counts.sign);
+  CHECK(d.nb == c.counts.branch);
+  CHECK(d.n == 16 + d.ns + 4 * d.nb);
+}
+
+TEST_CASE("classification: the paper's beam cut over a structured beam", "[classification]") {
+  const auto mesh = xfem::box_mesh({3, 6, 19}, {0, 0, 0}, {0.03, 0.06, 0.2});
+  const xfem::CutSurface cut(beam_cut());
+  const auto c = xfem::classify(mesh, cut);
+  for (int t = 0; t < mesh.tets.rows(); ++t) {
+    double xmin = 1, xmax = -1, zmin = 1, zmax = -1;
+    for (int i = 0; i < 4; ++i) {
+      const auto p = mesh.points.row(mesh.tets(t, i));
+      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+      zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
+    }
+    CAPTURE(t);
+    const bool crosses = zmin < 0.1 && zmax > 0.1;
+    if (!crosses || xmin >= 0.015) CHECK(c.cut_class[t] == CutClass::Uncut);
+    if (crosses && xmax <= 0.015) CHECK(c.cut_class[t] == CutClass::Complete);
+    if (c.cut_class[t] == CutClass::Partial) CHECK((xmin < 0.015 && xmax > 0.015));
+  }
+  for (int i = 0; i < mesh.points.rows(); ++i) CHECK(c.side[i] == (mesh.points(i, 2) > 0.1 ? 1 : -1));
+  CHECK(c.counts.partial > 0);
+  CHECK(c.counts.points_on_cut == 0);
+  CHECK_THAT(front_length(c.front), Catch::WithinAbs(0.06, 1e-12));
+  for (const auto& s : c.front.segments()) {
+    CHECK_THAT(s.p0.x(), Catch::WithinAbs(0.015, 1e-15));
+    CHECK_THAT(s.p0.z(), Catch::WithinAbs(0.1, 1e-15));
+    CHECK(c.front.frame(s.p0).R.col(0).isApprox(Eigen::Vector3d(1, 0, 0)));
+  }
+}
+
+namespace {
+
+/// Checks a classification by the beam cut against the plane's own answer: an edge is cut iff it
+/// crosses z = 0.1 at x <= 0.015, or (D2) has an end on the cut and ends on both sides; partially
+/// cut tets straddle the front x = 0.015; sides by z (D1: z = 0.1 is +1).
+void check_beam_cut(const xfem::TetMesh& mesh) {
+  auto side = [](const Eigen::Vector3d& p) { return p.z() >= 0.1 ? 1 : -1; };
+  auto on_cut = [](const Eigen::Vector3d& p) { return p.z() == 0.1 && p.x() <= 0.015; };
+  const xfem::CutSurface cut(beam_cut());
+  const auto c = xfem::classify(mesh, cut);
+  for (int t = 0; t < mesh.tets.rows(); ++t) {
+    int edges = 0;
+    double xmin = 1, xmax = -1;
+    for (int i = 0; i < 4; ++i) {
+      const Eigen::Vector3d a = mesh.points.row(mesh.tets(t, i));
+      xmin = std::min(xmin, a.x()), xmax = std::max(xmax, a.x());
+      for (int j = i + 1; j < 4; ++j) {
+        const Eigen::Vector3d b = mesh.points.row(mesh.tets(t, j));
+        REQUIRE(!(a.z() == 0.1 && b.z() == 0.1));  // no edge in the cut's plane (not modelled here)
+        if (on_cut(a) || on_cut(b)) {
+          edges += side(a) != side(b);
+          continue;
+        }
+        if ((a.z() - 0.1) * (b.z() - 0.1) >= 0) continue;
+        const double s = (0.1 - a.z()) / (b.z() - a.z());
+        edges += a.x() + s * (b.x() - a.x()) <= 0.015;
+      }
+    }
+    CAPTURE(t);
+    CHECK(c.cut_edges[t] == edges);
+    if (c.cut_class[t] == CutClass::Partial) CHECK((xmin < 0.015 && xmax > 0.015));
+    if (c.cut_class[t] == CutClass::Complete) CHECK(xmin < 0.015);
+  }
+  for (int i = 0; i < mesh.points.rows(); ++i) CHECK(c.side[i] == side(mesh.points.row(i).transpose()));
+  CHECK(c.counts.partial > 0);
+  CHECK(c.counts.complete > 0);
+  CHECK_THAT(front_length(c.front), Catch::WithinAbs(0.06, 1e-12));
+  for (const auto& s : c.front.segments())
+    CHECK(c.front.frame(0.5 * (s.p0 + s.p1)).R.col(0).isApprox(Eigen::Vector3d(1, 0, 0), 1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("classification: the beam cut over a jittered beam", "[classification]") {
+  auto mesh = xfem::box_mesh({6, 12, 38}, {0, 0, 0}, {0.03, 0.06, 0.2});
+  // Move interior nodes by up to 0.2 cells (seeded): no grid planes remain; cells stay positive.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  const Eigen::Vector3d h(0.005, 0.005, 0.2 / 38);
+  for (int i = 0; i < mesh.points.rows(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double x = mesh.points(i, k), hi = k == 0 ? 0.03 : k == 1 ? 0.06 : 0.2;
+      if (x > 1e-12 && x < hi - 1e-12) mesh.points(i, k) += u(rng) * h[k];
+    }
+  for (int t = 0; t < mesh.tets.rows(); ++t) REQUIRE(xfem::signed_volume(mesh, t) > 0);
+  check_beam_cut(mesh);
+}
+
+TEST_CASE("classification: the beam cut over an unstructured beam", "[classification]") {
+  check_beam_cut(xfem::unstructured_box_mesh({0, 0, 0}, {0.03, 0.06, 0.2}, 0.007));
+}
+
+TEST_CASE("classification: degenerate geometry follows rules D1-D4", "[classification]") {
+  SECTION("a cut that misses the body: everything uncut, N = NP") {
+    const auto mesh = xfem::box_mesh({2, 2, 2}, {0, 0, 0}, {1, 1, 1});
+    const auto c = xfem::classify(mesh, xfem::CutSurface(rectangle(-1, 2, -1, 2, 1.5)));
+    CHECK(c.counts.uncut == mesh.tets.rows());
+    CHECK(c.counts.none == mesh.points.rows());
+    CHECK(c.front.empty());
+    CHECK(xfem::dof_numbering(mesh.tets, mesh.points.rows(), ints(c.enrichment), ints(c.cut_class)).n ==
+          mesh.points.rows());
+  }
+  SECTION("nodes exactly on the cut (a grid plane): D1, D2, D3") {
+    // z = 0.5 is a grid plane of 2x2x2 cubes; the cut covers it all.
+    const auto mesh = xfem::box_mesh({2, 2, 2}, {0, 0, 0}, {1, 1, 1});
+    const auto c = xfem::classify(mesh, xfem::CutSurface(rectangle(-1, 2, -1, 2, 0.5)));
+    CHECK(c.counts.points_on_cut == 9);
+    CHECK(c.counts.partial == 0);
+    for (int i = 0; i < mesh.points.rows(); ++i) {
+      const double z = mesh.points(i, 2);
+      CHECK(c.side[i] == (z >= 0.5 ? 1 : -1));  // D1: on the cut is +1
+      // D3: only the nodes on the cut carry a (non-vanishing) sign enrichment.
+      CHECK(c.enrichment[i] == (z == 0.5 ? Enrichment::Sign : Enrichment::None));
+    }
+    for (int t = 0; t < mesh.tets.rows(); ++t) {
+      double zmax = 0;
+      for (int i = 0; i < 4; ++i) zmax = std::max(zmax, mesh.points(mesh.tets(t, i), 2));
+      // D2: the upper layer only touches the cut from its side: uncut; the lower one is cut.
+      CHECK(c.cut_class[t] == (zmax > 0.5 ? CutClass::Uncut : CutClass::Complete));
+    }
+    CHECK(c.counts.sign_dropped > 0);
+  }
+  SECTION("a cut through the whole body: no partial tets, no front") {
+    const auto mesh = xfem::box_mesh({2, 2, 3}, {0, 0, 0}, {1, 1, 1});
+    const auto c = xfem::classify(mesh, xfem::CutSurface(rectangle(-1, 2, -1, 2, 0.5)));
+    CHECK(c.counts.partial == 0);
+    CHECK(c.counts.branch == 0);
+    CHECK(c.front.empty());
+    CHECK(c.counts.complete > 0);
+  }
+  SECTION("a front lying exactly on interior faces, and on the body's surface (D4)") {
+    const auto mesh = xfem::box_mesh({2, 1, 3}, {0, 0, 0}, {2, 1, 1});
+    // Front x = 1: the grid plane between the two columns of cubes.
+    const auto c = xfem::classify(mesh, xfem::CutSurface(rectangle(-1, 1, -1, 2, 0.5)));
+    CHECK_THAT(front_length(c.front), Catch::WithinAbs(1.0, 1e-12));
+    // Front x = 2 on the body's surface: the cut goes through the whole body.
+    const auto d = xfem::classify(mesh, xfem::CutSurface(rectangle(-1, 2, -1, 2, 0.5)));
+    CHECK(d.front.empty());
+    CHECK(d.counts.partial == 0);
+  }
+  SECTION("disconnected cut pieces give separate fronts") {
+    const auto mesh = xfem::box_mesh({4, 1, 3}, {0, 0, 0}, {4, 1, 1});
+    xfem::TriangleMesh two = rectangle(-1, 1.5, -1, 2, 0.5);
+    const xfem::TriangleMesh right = rectangle(2.5, 5, -1, 2, 0.5);
+    two.points.conservativeResize(8, 3);
+    two.points.bottomRows(4) = right.points;
+    two.triangles.conservativeResize(4, 3);
+    two.triangles.bottomRows(2) = right.triangles.array() + 4;
+    const auto c = xfem::classify(mesh, xfem::CutSurface(two));
+    REQUIRE(c.front.segments().size() == 2);
+    // Each front points away from its own piece: +x at x = 1.5, -x at x = 2.5.
+    CHECK(c.front.frame({1.6, 0.5, 0.5}).R.col(0).isApprox(Eigen::Vector3d(1, 0, 0)));
+    CHECK(c.front.frame({2.4, 0.5, 0.5}).R.col(0).isApprox(Eigen::Vector3d(-1, 0, 0)));
+    for (int t = 0; t < mesh.tets.rows(); ++t) {
+      if (c.cut_class[t] != CutClass::Partial) continue;
+      double xmin = 9, xmax = -9;
+      for (int i = 0; i < 4; ++i)
+        xmin = std::min(xmin, mesh.points(mesh.tets(t, i), 0)), xmax = std::max(xmax, mesh.points(mesh.tets(t, i), 0));
+      CHECK(((xmin < 1.5 && xmax > 1.5) || (xmin < 2.5 && xmax > 2.5)));
+    }
+    CHECK(c.counts.partial > 0);
+  }
+}
+
+TEST_CASE("classification: radius enrichment branch-enriches nodes near the front", "[classification]") {
+  const auto mesh = xfem::box_mesh({3, 6, 19}, {0, 0, 0}, {0.03, 0.06, 0.2});
+  const xfem::CutSurface cut(beam_cut());
+  const auto plain = xfem::classify(mesh, cut);
+  xfem::ClassifyOptions o;
+  o.tip_radius = 0.02;
+  const auto wide = xfem::classify(mesh, cut, o);
+  CHECK(wide.counts.branch > plain.counts.branch);
+  CHECK(wide.counts.radius_branch == wide.counts.branch - plain.counts.branch);
+  for (int i = 0; i < mesh.points.rows(); ++i) {
+    const double r = std::hypot(mesh.points(i, 0) - 0.015, mesh.points(i, 2) - 0.1);
+    if (r <= 0.02 - 1e-12) CHECK(wide.enrichment[i] == Enrichment::Branch);
+    if (plain.enrichment[i] == Enrichment::Branch) CHECK(wide.enrichment[i] == Enrichment::Branch);
+  }
+}
+
+TEST_CASE("classification: partially cut tets without a front inside the body are an error", "[classification]") {
+  // A cut lying in the body's surface face z = 0 with its boundary on the surface too: edges in
+  // that face touch it, but the front pieces are all on the surface (D4).
+  const auto mesh = single_tet({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  CHECK_THROWS_WITH(xfem::classify(mesh, xfem::CutSurface(rectangle(0.2, 0.3, -1, 0.1, 0.0))),
+                    Catch::Contains("partially cut tets but no cut front inside the body"));
+}
+
+TEST_CASE("classification: without a cut everything is uncut and plain", "[classification]") {
+  const auto mesh = xfem::box_mesh({2, 1, 1}, {0, 0, 0}, {2, 1, 1});
+  const auto c = xfem::classify_without_cut(mesh);
+  CHECK(c.counts.uncut == 12);
+  CHECK(c.counts.none == 12);
+  CHECK(c.counts.edges == 20 + 11 + 2);  // grid edges, one diagonal per square face, one per cube
+  CHECK(c.side == std::vector<int>(12, 1));
+  CHECK(c.front.empty());
+}

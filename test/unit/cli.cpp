@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/cli.h"
+
+#include <catch2/catch.hpp>
+#include <iostream>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "xfem/error.h"
+#include "xfem/version.h"
+
+namespace {
+
+// Redirects std::cout and std::cerr into strings for its lifetime.
+struct Captured {
+  std::ostringstream out, err;
+  std::streambuf* old_out = std::cout.rdbuf(out.rdbuf());
+  std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
+  ~Captured() {
+    std::cout.rdbuf(old_out);
+    std::cerr.rdbuf(old_err);
+  }
+};
+
+struct Result {
+  int code = -1;
+  bool ran = false;
+  std::string out, err;
+};
+
+// Runs a test tool "xfem-test" (a required --cut, an optional -o) on `args` with `body`.
+Result run_tool(std::vector<std::string> args, const std::function<void()>& body = [] {}) {
+  auto tool = xfem::cli::make_tool("xfem-test", "Does nothing, for the CLI helper's tests.",
+                                   "xfem-test --cut cut.vtp -o out.vtu");
+  std::string cut, output = "-";
+  tool->app.add_option("-c,--cut", cut, "cut surface")->required();
+  tool->app.add_option("-o,--output", output, "output mesh ('-' = stdout)");
+  args.insert(args.begin(), "xfem-test");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  Result r;
+  Captured captured;
+  r.code = xfem::cli::run(*tool, static_cast<int>(argv.size()), argv.data(), [&] {
+    r.ran = true;
+    body();
+  });
+  r.out = captured.out.str();
+  r.err = captured.err.str();
+  return r;
+}
+
+int count_lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+}  // namespace
+
+TEST_CASE("cli: --help prints usage and the example on stdout and returns 0", "[cli]") {
+  const Result r = run_tool({"--help"});
+  CHECK(r.code == 0);
+  CHECK_FALSE(r.ran);
+  CHECK(r.err.empty());
+  CHECK_THAT(r.out, Catch::Contains("Does nothing, for the CLI helper's tests."));
+  for (const char* option : {"--cut", "--output", "--quiet", "--verbose", "--version", "--help"}) {
+    INFO(option);
+    CHECK_THAT(r.out, Catch::Contains(option));
+  }
+  CHECK_THAT(r.out, Catch::EndsWith("Example:\n  xfem-test --cut cut.vtp -o out.vtu\n"));
+  CHECK(run_tool({"-h"}).code == 0);
+}
+
+TEST_CASE("cli: --version prints the tool name and version and returns 0", "[cli]") {
+  const Result r = run_tool({"--version"});
+  CHECK(r.code == 0);
+  CHECK_FALSE(r.ran);
+  CHECK_THAT(r.out, Catch::StartsWith(std::string("xfem-test ") + xfem::version));
+  CHECK(count_lines(r.out) == 1);
+  CHECK(r.err.empty());
+}
+
+TEST_CASE("cli: an unknown flag is a usage error, exit 2, with a hint on stderr", "[cli]") {
+  const Result r = run_tool({"--cut", "c.vtp", "--bogus"});
+  CHECK(r.code == 2);
+  CHECK_FALSE(r.ran);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::StartsWith("xfem-test: usage error: ") && Catch::Contains("--bogus") &&
+                        Catch::EndsWith(" (try xfem-test --help)\n"));
+  CHECK(count_lines(r.err) == 1);
+}
+
+TEST_CASE("cli: a missing required option is a usage error, exit 2", "[cli]") {
+  const Result r = run_tool({"-o", "x.vtu"});
+  CHECK(r.code == 2);
+  CHECK_FALSE(r.ran);
+  CHECK_THAT(r.err, Catch::StartsWith("xfem-test: usage error: ") && Catch::Contains("--cut is required") &&
+                        Catch::EndsWith(" (try xfem-test --help)\n"));
+  CHECK(count_lines(r.err) == 1);
+}
+
+TEST_CASE("cli: a body throwing xfem::Error exits 1 with one error line", "[cli]") {
+  const Result r = run_tool({"--cut", "c.vtp"}, [] { throw xfem::Error("c.vtp: empty surface (0 points, 0 triangles)"); });
+  CHECK(r.code == 1);
+  CHECK(r.ran);
+  CHECK(r.out.empty());
+  CHECK(r.err == "xfem-test: error: c.vtp: empty surface (0 points, 0 triangles)\n");
+  SECTION("a message spanning lines is printed on one") {
+    const Result m = run_tool({"--cut", "c.vtp"}, [] { throw xfem::Error("first\nsecond\n"); });
+    CHECK(m.code == 1);
+    CHECK(m.err == "xfem-test: error: first second\n");
+  }
+  SECTION("other exceptions too") {
+    const Result m = run_tool({"--cut", "c.vtp"}, [] { throw std::bad_alloc(); });
+    CHECK(m.code == 1);
+    CHECK(m.err == "xfem-test: error: out of memory\n");
+  }
+}
+
+TEST_CASE("cli: a successful body exits 0 and sees the parsed options", "[cli]") {
+  const Result r = run_tool({"--cut", "c.vtp", "-o", "out.vtu"}, [] { xfem::cli::info("working"); });
+  CHECK(r.code == 0);
+  CHECK(r.ran);
+  CHECK(r.out.empty());  // logs never go to stdout: it carries data
+  CHECK(r.err == "xfem-test: working\n");
+}
+
+TEST_CASE("cli: -q silences info and progress but not warnings; -v enables detail", "[cli]") {
+  auto body = [] {
+    xfem::cli::info("an info");
+    xfem::cli::detail("a detail");
+    xfem::cli::warn("a warning");
+    xfem::cli::progress("meshing")(1.0);
+  };
+  const Result normal = run_tool({"--cut", "c.vtp"}, body);
+  CHECK(normal.err == "xfem-test: an info\nxfem-test: warning: a warning\nxfem-test: meshing 100%\n");
+  const Result quiet = run_tool({"-q", "--cut", "c.vtp"}, body);
+  CHECK(quiet.code == 0);
+  CHECK(quiet.err == "xfem-test: warning: a warning\n");
+  const Result verbose = run_tool({"-v", "--cut", "c.vtp"}, body);
+  CHECK(verbose.code == 0);
+  CHECK_THAT(verbose.err, Catch::StartsWith("xfem-test: options:\n") && Catch::Contains("cut=\"c.vtp\"\n") &&
+                              Catch::Contains("output='-'\n") &&
+                              Catch::Contains("xfem-test: a detail\n"));
+}
+
+TEST_CASE("cli: -q together with -v is a usage error", "[cli]") {
+  const Result r = run_tool({"-q", "-v", "--cut", "c.vtp"});
+  CHECK(r.code == 2);
+  CHECK_FALSE(r.ran);
+  CHECK(r.err == "xfem-test: usage error: -q and -v exclude each other (try xfem-test --help)\n");
+}
+
+TEST_CASE("cli: progress prints at most 11 lines, 0% to 100% in steps of 10", "[cli]") {
+  const Result r = run_tool({"--cut", "c.vtp"}, [] {
+    auto progress = xfem::cli::progress("solving");
+    for (int i = 0; i <= 1000; ++i) progress(i / 1000.0);
+    progress(1.5);  // overshoot and nonsense are clamped, not printed as 150%
+    progress(-1);
+  });
+  CHECK(count_lines(r.err) == 11);
+  CHECK_THAT(r.err, Catch::StartsWith("xfem-test: solving 0%\nxfem-test: solving 10%\n") &&
+                        Catch::EndsWith("xfem-test: solving 90%\nxfem-test: solving 100%\n"));
+  const Result sparse = run_tool({"--cut", "c.vtp"}, [] {
+    auto progress = xfem::cli::progress("solving");
+    progress(0.55);
+    progress(1.0);
+  });
+  CHECK(sparse.err == "xfem-test: solving 50%\nxfem-test: solving 100%\n");
+}
+
+TEST_CASE("cli: logging outside run() has no tool prefix", "[cli]") {
+  run_tool({"--cut", "c.vtp"});
+  Captured captured;
+  xfem::cli::info("plain");
+  xfem::cli::warn("careful");
+  CHECK(captured.err.str() == "plain\nwarning: careful\n");
+}

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/problem.h"
+
+#include <catch2/catch.hpp>
+
+#include "xfem/box_mesh.h"
+#include "xfem/error.h"
+
+namespace {
+
+xfem::Json beam() {
+  return xfem::Json::parse(R"({
+    "material": {"E": 300e3, "nu": 0.35},
+    "integration": {"points": 30},
+    "dirichlet": [
+      {"name": "fixed end", "selector": {"half_spaces": [{"point": [0, 0, 0.001], "normal": [0, 0, -1]}]},
+       "value": [0, 0, 0]},
+      {"name": "pulled edge", "selector": {"half_spaces": [{"point": [0, 0, 0.199], "normal": [0, 0, 1]},
+                                                          {"point": [0.001, 0, 0], "normal": [-1, 0, 0]}]},
+       "value": [null, null, 0.02]}
+    ],
+    "neumann": [{"selector": {"box": {"lo": [0, 0, 0.2], "hi": [0.03, 0.06, 0.2]}}, "traction": [0, 0, 1e3]}],
+    "body_force": [0, 0, -9810]
+  })");
+}
+
+// The one-line message parse_problem throws for `j`.
+std::string error_of(const xfem::Json& j) {
+  try {
+    xfem::parse_problem(j, "problem.json");
+  } catch (const xfem::Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("problem: the paper's beam problem parses", "[problem]") {
+  const xfem::Problem p = xfem::parse_problem(beam(), "problem.json");
+  CHECK(p.E == 300e3);
+  CHECK(p.nu == 0.35);
+  CHECK(p.points == 30);
+  REQUIRE(p.dirichlet.size() == 2);
+  CHECK(p.dirichlet[1].name == "pulled edge");
+  CHECK(p.dirichlet[1].selector.planes.size() == 2);
+  CHECK(!p.dirichlet[1].value[0]);
+  CHECK(*p.dirichlet[1].value[2] == 0.02);
+  REQUIRE(p.neumann.size() == 1);
+  CHECK(p.neumann[0].selector.kind == xfem::Selector::Kind::Box);
+  CHECK(p.body_force.z() == -9810);
+}
+
+TEST_CASE("problem: selectors pick nodes by half-spaces (strict), boxes (closed) and point arrays", "[problem]") {
+  xfem::TetMesh m = xfem::box_mesh({3, 3, 4}, {0, 0, 0}, {0.03, 0.06, 0.2});
+  const xfem::Problem p = xfem::parse_problem(beam(), "problem.json");
+  // z <= 0.001: the 16 nodes of the face z = 0; z >= 0.199 and x <= 0.001: the 4 of the edge.
+  CHECK(xfem::select_nodes(p.dirichlet[0].selector, m, "fixed").size() == 16);
+  const auto edge = xfem::select_nodes(p.dirichlet[1].selector, m, "pulled");
+  REQUIRE(edge.size() == 4);
+  for (int k : edge) CHECK((m.points(k, 0) == 0.0 && m.points(k, 2) == 0.2));
+  CHECK(xfem::select_nodes(p.neumann[0].selector, m, "top").size() == 16);
+  // Strictness: a plane through a node row does not select it.
+  xfem::Selector on_plane;
+  on_plane.planes = {{Eigen::Vector3d(0, 0, 0.2), Eigen::Vector3d(0, 0, 1)}};
+  CHECK_THROWS_WITH(xfem::select_nodes(on_plane, m, "problem.json: dirichlet[0] ('top')"),
+                    "problem.json: dirichlet[0] ('top') selects no node");
+  xfem::Selector named;
+  named.kind = xfem::Selector::Kind::PointArray;
+  named.array = "clamp";
+  CHECK_THROWS_WITH(xfem::select_nodes(named, m, "problem.json: dirichlet[2]"),
+                    "problem.json: dirichlet[2]: the mesh has no point array 'clamp'");
+  m.point_data["clamp"] = xfem::make_array(xfem::DataArray::Type::Int32, 1, m.points.rows());
+  m.point_data["clamp"].values[5] = 1;
+  CHECK(xfem::select_nodes(named, m, "x") == std::vector<int>{5});
+}
+
+TEST_CASE("problem: each bad problem file gives one error line naming the item", "[problem]") {
+  xfem::Json j = beam();
+  SECTION("missing field") {
+    j["material"].erase("E");
+    CHECK(error_of(j) == "problem.json: missing field 'material.E'");
+  }
+  SECTION("missing material") {
+    j.erase("material");
+    CHECK(error_of(j) == "problem.json: missing field 'material'");
+  }
+  SECTION("negative E") {
+    j["material"]["E"] = -3;
+    CHECK(error_of(j) == "problem.json: material.E must be positive, got -3");
+  }
+  SECTION("nu outside (-1, 0.5)") {
+    j["material"]["nu"] = 0.5;
+    CHECK(error_of(j) == "problem.json: material.nu must lie in (-1, 0.5), got 0.5");
+    j["material"]["nu"] = -1.0;
+    CHECK(error_of(j) == "problem.json: material.nu must lie in (-1, 0.5), got -1.0");
+  }
+  SECTION("unknown key") {
+    j["dirichlet"][1]["valeu"] = 1;
+    CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value)");
+  }
+  SECTION("unknown top-level key") {
+    j["materials"] = 1;
+    CHECK(error_of(j) ==
+          "problem.json: unknown key 'materials' (allowed here: description, material, integration, dirichlet, "
+          "neumann, body_force)");
+  }
+  SECTION("wrong type") {
+    j["dirichlet"][0]["value"] = {0, "zero", 0};
+    CHECK(error_of(j) == "problem.json: dirichlet[0].value[1] must be a number");
+  }
+  SECTION("two selector kinds") {
+    j["dirichlet"][0]["selector"]["box"] = {{"lo", {0, 0, 0}}, {"hi", {1, 1, 1}}};
+    CHECK(error_of(j) == "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array");
+  }
+  SECTION("zero normal") {
+    j["dirichlet"][0]["selector"]["half_spaces"][0]["normal"] = {0, 0, 0};
+    CHECK(error_of(j) == "problem.json: dirichlet[0].selector.half_spaces[0].normal must not be zero");
+  }
+  SECTION("all components free") {
+    j["dirichlet"][0]["value"] = {nullptr, nullptr, nullptr};
+    CHECK(error_of(j) == "problem.json: dirichlet[0].value leaves every component free (null): the condition does nothing");
+  }
+  SECTION("bad point count") {
+    j["integration"]["points"] = 0;
+    CHECK(error_of(j) == "problem.json: integration.points must be an integer in 1..100000, got 0");
+  }
+  SECTION("bad refinement") {
+    j["integration"]["refine"] = 9;
+    CHECK(error_of(j) == "problem.json: integration.refine must be an integer in 0..8, got 9");
+  }
+  SECTION("traction of two numbers") {
+    j["neumann"][0]["traction"] = {1, 2};
+    CHECK(error_of(j) == "problem.json: neumann[0].traction must be a list of 3 numbers");
+  }
+}
+
+TEST_CASE("problem: a missing problem file is named", "[problem]") {
+  CHECK_THROWS_WITH(xfem::read_problem("no/such/problem.json"),
+                    "no/such/problem.json: cannot open the problem file (does it exist?)");
+}
+
+TEST_CASE("problem: describe names the condition for messages", "[problem]") {
+  const xfem::Problem p = xfem::parse_problem(beam(), "in/problem.json");
+  CHECK(xfem::describe(p, "dirichlet", 1) == "in/problem.json: dirichlet[1] ('pulled edge')");
+  CHECK(xfem::describe(p, "neumann", 0) == "in/problem.json: neumann[0]");
+}

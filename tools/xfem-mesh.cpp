@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// Makes every input the pipelines need: structured and unstructured tet meshes, cut surfaces.
+#include <array>
+#include <vector>
+
+#include "xfem/box_mesh.h"
+#include "xfem/cli.h"
+#include "xfem/cut_generation.h"
+#include "xfem/error.h"
+#include "xfem/organ_shape.h"
+#include "xfem/unstructured_mesh.h"
+#include "xfem/vtk_io.h"
+
+namespace {
+
+using V3 = std::array<double, 3>;
+Eigen::Vector3d vec(const V3& a) { return {a[0], a[1], a[2]}; }
+Eigen::Vector2i pair(const std::vector<int>& n) { return {n[0], n.size() > 1 ? n[1] : n[0]}; }
+
+CLI::App* command(CLI::App& app, const char* name, const char* what, const char* example, std::string& out) {
+  CLI::App* sub = app.add_subcommand(name, what);
+  sub->footer(std::string("Example:\n  xfem-mesh ") + example);
+  sub->add_option("-o,--output", out, "output file (.vtu for meshes, .vtp for cuts)")->required();
+  return sub;
+}
+
+void write_mesh(const xfem::TetMesh& m, const std::string& out) {
+  xfem::write_tet_mesh(m, out);
+  xfem::cli::info(std::to_string(m.tets.rows()) + " tets, " + std::to_string(m.points.rows()) + " points -> " + out);
+}
+
+void write_cut(const xfem::TriangleMesh& m, const std::string& out) {
+  xfem::write_triangle_mesh(m, out);
+  xfem::cli::info(std::to_string(m.triangles.rows()) + " triangles, area " + std::to_string(xfem::surface_area(m)) +
+                  " m^2 -> " + out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  auto tool = xfem::cli::make_tool(
+      "xfem-mesh", "Makes inputs: tetrahedral meshes (.vtu) and cut surfaces (.vtp). Same arguments, same bytes.",
+      "xfem-mesh unstructured-box --hi 0.03 0.06 0.2 --size 0.006 -o beam.vtu\n"
+      "  xfem-mesh cut-rect --beam-cut -o cut.vtp\n  (xfem-mesh <command> --help for each command's options)");
+  auto& app = tool->app;
+  app.require_subcommand(1);
+  std::string out, input;
+  V3 lo{0, 0, 0}, hi{0, 0, 0}, corner{0, 0, 0}, edge1{0, 0, 0}, edge2{0, 0, 0}, center{0, 0, 0}, normal{0, 0, 1};
+  std::array<int, 3> cells{0, 0, 0};
+  std::vector<int> divisions{1};
+  double size = 0, split_z = 0, split_x = 0, z0 = 0.005, amplitude = 0.01, wavelength = 0.1, radius = 0.03;
+  std::array<double, 2> sine_lo{-0.1, -0.07}, sine_hi{0.1, 0.01};
+  int rings = 8;
+  bool beam = false;
+
+  auto* box = command(app, "box", "structured box: NX x NY x NZ cubes of 6 tets; optionally cut by duplicated nodes",
+                      "box --cells 18 36 120 --hi 0.03 0.06 0.2 --beam-cut -o reference.vtu", out);
+  box->add_option("--cells", cells, "cubes along x, y, z")->required();
+  box->add_option("--lo", lo, "lower corner, m (default 0 0 0)");
+  box->add_option("--hi", hi, "upper corner, m")->required();
+  auto* sz = box->add_option("--split-z", split_z, "cut the grid plane z = Z for x < --split-x-max by duplicating "
+                                                   "its nodes (point array cut_side); must be a grid plane");
+  auto* sx = box->add_option("--split-x-max", split_x, "x of the cut's straight front (a grid plane), m");
+  sz->needs(sx);
+  sx->needs(sz);
+  box->add_flag("--beam-cut", beam, "the paper's beam cut: --split-z 0.1 --split-x-max 0.015")->excludes(sz)->excludes(sx);
+
+  auto* ubox = command(app, "unstructured-box", "unstructured tet mesh of a box (CGAL Mesh_3), edges kept sharp",
+                       "unstructured-box --hi 0.03 0.06 0.2 --size 0.006 -o beam.vtu", out);
+  ubox->add_option("--lo", lo, "lower corner, m (default 0 0 0)");
+  ubox->add_option("--hi", hi, "upper corner, m")->required();
+  const char* size_help = "target edge length, m (tet count grows like 1/size^3)";
+  ubox->add_option("--size", size, size_help)->required();
+
+  auto* organ = command(app, "organ", "unstructured tet mesh of an organ-like smooth body 0.15 m long centred at the "
+                                      "origin (a bent, tapered ellipsoid; docs/FORMATS.md)",
+                        "organ --size 0.008 -o organ.vtu", out);
+  organ->add_option("--size", size, size_help)->required();
+
+  auto* surf = command(app, "surface", "unstructured tet mesh of the volume inside a closed triangle surface",
+                       "surface body.stl --size 0.005 -o body.vtu", out);
+  surf->add_option("input", input, "closed surface (.stl/.off/.obj/.vtp/.vtk)")->required();
+  surf->add_option("--size", size, size_help)->required();
+
+  auto* rect = command(app, "cut-rect", "planar cut: the parallelogram corner, corner+edge1, corner+edge2; normal "
+                                        "along edge1 x edge2",
+                       "cut-rect --corner 0 0 0.1 --edge1 0.03 0 0 --edge2 0 0.06 0 --divisions 4 -o cut.vtp", out);
+  auto* oc = rect->add_option("--corner", corner, "first corner, m");
+  auto* o1 = rect->add_option("--edge1", edge1, "first edge vector, m");
+  auto* o2 = rect->add_option("--edge2", edge2, "second edge vector, m");
+  rect->add_flag("--beam-cut", beam, "the paper's beam cut: z = 0.1, x in [-0.01, 0.015], y in [-0.01, 0.07], normal +z")
+      ->excludes(oc)->excludes(o1)->excludes(o2);
+  rect->add_option("--divisions", divisions, "quads along edge1 [and edge2], 2 triangles each (default 1)")->expected(1, 2);
+  rect->parse_complete_callback([&] {
+    if (!beam && (!*oc || !*o1 || !*o2)) throw CLI::RequiredError("cut-rect needs --corner, --edge1 and --edge2, or --beam-cut");
+  });
+
+  auto* sine = command(app, "cut-sine", "sinusoidal sheet z = z0 + A sin(2 pi x / L) over a rectangle, normal +z; the "
+                                        "defaults cut the organ from y = -0.07 (outside) to a front at y = 0.01 (inside)",
+                       "cut-sine --amplitude 0.01 --wavelength 0.1 --divisions 80 40 -o blade.vtp", out);
+  sine->add_option("--lo", sine_lo, "x, y of the rectangle's low corner, m (default -0.1 -0.07)");
+  sine->add_option("--hi", sine_hi, "x, y of the rectangle's high corner, m (default 0.1 0.01)");
+  sine->add_option("--z0", z0, "mean height z0, m (default 0.005)");
+  sine->add_option("--amplitude", amplitude, "amplitude A, m (default 0.01)");
+  sine->add_option("--wavelength", wavelength, "wavelength L, m (default 0.1)");
+  sine->add_option("--divisions", divisions, "quads along x [and y] (default 80 40)")->expected(1, 2);
+
+  auto* disc = command(app, "cut-disc", "flat disc: a cut whose front lies inside the body all round",
+                       "cut-disc --center 0 0 0 --normal 0 0 1 --radius 0.03 --rings 8 -o disc.vtp", out);
+  disc->add_option("--center,--centre", center, "centre, m (default 0 0 0)");
+  disc->add_option("--normal", normal, "normal, the cut's +1 side (default 0 0 1)");
+  disc->add_option("--radius", radius, "radius, m (default 0.03)");
+  disc->add_option("--rings", rings, "concentric rings of 6, 12, 18, ... points: 6 rings^2 triangles (default 8)");
+
+  return xfem::cli::run(*tool, argc, argv, [&] {
+    if (box->parsed()) {
+      const Eigen::Vector3i n(cells[0], cells[1], cells[2]);
+      if (beam || *sz) write_mesh(xfem::box_mesh(n, vec(lo), vec(hi), beam ? xfem::BoxCut{0.1, 0.015} : xfem::BoxCut{split_z, split_x}), out);
+      else write_mesh(xfem::box_mesh(n, vec(lo), vec(hi)), out);
+    } else if (ubox->parsed()) {
+      write_mesh(xfem::unstructured_box_mesh(vec(lo), vec(hi), size), out);
+    } else if (organ->parsed()) {
+      write_mesh(xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, size), out);
+    } else if (surf->parsed()) {
+      std::vector<std::string> warnings;
+      const xfem::TriangleMesh s = xfem::read_triangle_mesh(input, &warnings);
+      for (const auto& w : warnings) xfem::cli::warn(w);
+      write_mesh(xfem::surface_mesh(s, size, input), out);
+    } else if (rect->parsed()) {
+      write_cut(beam ? xfem::beam_cut(pair(divisions))
+                     : xfem::cut_parallelogram(vec(corner), vec(corner) + vec(edge1), vec(corner) + vec(edge2), pair(divisions)),
+                out);
+    } else if (sine->parsed()) {
+      if (sine->count("--divisions") == 0) divisions = {80, 40};
+      write_cut(xfem::cut_sine({sine_lo[0], sine_lo[1]}, {sine_hi[0], sine_hi[1]}, z0, amplitude, wavelength,
+                               pair(divisions)),
+                out);
+    } else if (disc->parsed()) {
+      write_cut(xfem::cut_disc(vec(center), vec(normal), radius, rings), out);
+    }
+  });
+}
