@@ -24,6 +24,12 @@ std::string g(double v) {
   return buf;
 }
 
+// The enriched.vtu point array and value that find the mesh point of enriched vector k (FORMATS.md).
+std::string enriched_point_key(const xfem::LinearSystem& s, long k) {
+  if (k < s.np + s.ns) return "sign_dof = " + std::to_string(k);
+  return "branch_dof = " + std::to_string(s.np + s.ns + 4 * ((k - s.np - s.ns) / 4));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,7 +60,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rigid", "none"}));
   app.add_option("--drop-tiny-enrichment", drop_tol,
                  "fix to 0 the enriched DOFs whose diagonal of K is below TOL times the mean diagonal of the original "
-                 "DOFs (sign/branch DOFs with negligible support; e.g. 1e-6; default 0: keep all)")
+                 "DOFs: sign/branch DOFs with a tiny but non-zero support on one side of the cut (TOL ~ the volume "
+                 "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
+                 "of K is exactly zero are always fixed to 0, with a warning")
       ->check(CLI::NonNegativeNumber);
   return xfem::cli::run(*tool, argc, argv, [&] {
     std::unique_ptr<xfem::PetscSession> mpi;
@@ -72,6 +80,18 @@ int main(int argc, char** argv) {
          g(xfem::cli::now() - t_read) + " s");
     xfem::require_constrained(s);
 
+    // Enriched DOFs without support make K singular whatever the threshold: always eliminated.
+    const auto unsupported = xfem::fix_unsupported_enrichment(s);
+    if (!unsupported.empty()) {
+      std::vector<long> vectors;
+      for (long d : unsupported)
+        if (vectors.empty() || vectors.back() != d / 3) vectors.push_back(d / 3);
+      warn(std::to_string(unsupported.size()) + " enriched DOFs (" + std::to_string(vectors.size()) +
+           (vectors.size() == 1 ? " vector" : " vectors") +
+           ") have an exactly zero row in K (no support on one side of the cut): fixed to 0; first " +
+           xfem::describe_dof(s, unsupported.front()) + " (its mesh point: the one with " + enriched_point_key(s, vectors.front()) +
+           " in enriched.vtu)");
+    }
     const auto tiny = xfem::tiny_enriched_dofs(s, std::max(kTinyWarn, drop_tol));
     if (drop_tol > 0) {
       xfem::fix_to_zero(s, tiny);
@@ -90,6 +110,7 @@ int main(int argc, char** argv) {
     report["dofs"] = 3 * s.n;
     report["fixed_dofs"] = static_cast<long>(s.fixed.size());
     report["nonzeros"] = nonzeros;
+    report["unsupported_enriched_dofs"] = static_cast<long>(unsupported.size());
     report["dropped_enriched_dofs"] = drop_tol > 0 ? static_cast<long>(tiny.size()) : 0L;
     report["backend"] = backend;
     const xfem::ReducedSystem reduced = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);

@@ -213,6 +213,30 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
     }
   }, report(0.3, 0.9));
 
+  // 2b. D1 with a round-off tolerance: a node closer to the cut than 1e-10 of the mesh's size
+  //     (e.g. z = 0.10000000000000003 for a cut at z = 0.1, a mesher's midpoint) is on the cut.
+  //     Left off the cut, it would give its neighbours a support of ~1e-17 relative volume on
+  //     its side: K near-singular, and zero when no integration point lands there. Only end
+  //     points of cut edges can matter, so only they are measured.
+  const double on_cut_tolerance =
+      1e-10 * (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm();
+  std::vector<char> snapped(V, 0);
+  for (std::size_t i = 0; i < unique.size(); ++i) {
+    if (!edge_cut[i]) continue;
+    for (const int p : {static_cast<int>(unique[i] >> 32), static_cast<int>(unique[i] & 0xffffffffu)}) {
+      if (c.on_cut[p] || snapped[p]) continue;
+      if (cut.closest(mesh.points.row(p).transpose()).distance <= on_cut_tolerance) snapped[p] = 1;
+    }
+  }
+  if (std::find(snapped.begin(), snapped.end(), 1) != snapped.end()) {
+    for (long p = 0; p < V; ++p)
+      if (snapped[p]) c.on_cut[p] = 1, c.side[p] = 1;
+    for (std::size_t i = 0; i < unique.size(); ++i) {
+      const int p = static_cast<int>(unique[i] >> 32), q = static_cast<int>(unique[i] & 0xffffffffu);
+      if (snapped[p] || snapped[q]) edge_cut[i] = c.side[p] != c.side[q];
+    }
+  }
+
   // 3. Tets: cut edges, completely cut faces, class.
   c.cut_edges.assign(T, 0);
   c.cut_faces.assign(T, 0);

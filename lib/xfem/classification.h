@@ -26,7 +26,7 @@ struct ClassifyOptions {
 /// Everything xfem-classify decides; later stages read it, never recompute it.
 struct Classification {
   std::vector<int> side;              ///< per point: H(P_m) = +1 / -1 (CutSurface::side)
-  std::vector<char> on_cut;           ///< per point: 1 if the point lies exactly on the closed cut
+  std::vector<char> on_cut;           ///< per point: 1 if the point lies on the closed cut (exactly, or within 1e-10 of the mesh's bounding-box diagonal: rule D1)
   std::vector<Enrichment> enrichment; ///< per point
   std::vector<CutClass> cut_class;    ///< per tet
   std::vector<int> cut_edges;         ///< per tet: how many of its 6 edges are cut (0..6)

@@ -105,6 +105,31 @@ std::string describe_dof(const LinearSystem& s, long dof) {
   return "DOF " + std::to_string(dof) + " (vector " + std::to_string(k) + ", " + kind + ", component " + component + ")";
 }
 
+std::vector<long> zero_rows(const LinearSystem& s) {
+  // K is stored with both triangles, so a column holds the whole row.
+  std::vector<long> zero;
+  for (int j = 0; j < s.K.outerSize(); ++j) {
+    bool any = false;
+    for (SparseMatrix::InnerIterator it(s.K, j); it && !any; ++it) any = it.value() != 0.0;
+    if (!any) zero.push_back(j);
+  }
+  return zero;
+}
+
+std::vector<long> fix_unsupported_enrichment(LinearSystem& s) {
+  std::vector<long> enriched;
+  for (long d : zero_rows(s)) {
+    if (std::binary_search(s.fixed.begin(), s.fixed.end(), d)) continue;  // its value is known anyway
+    if (d < 3 * s.np)
+      throw Error("K has an exactly zero row at " + describe_dof(s, d) +
+                  ": the mesh point belongs to no tet of non-zero volume, so nothing determines its displacement "
+                  "(K is singular; check the mesh)");
+    enriched.push_back(d);
+  }
+  fix_to_zero(s, enriched);
+  return enriched;
+}
+
 std::vector<long> tiny_enriched_dofs(const LinearSystem& s, double tolerance) {
   const Eigen::VectorXd diag = s.K.diagonal();
   const long original = std::min<long>(3 * s.np, diag.size());
@@ -112,7 +137,7 @@ std::vector<long> tiny_enriched_dofs(const LinearSystem& s, double tolerance) {
   const double mean = diag.head(original).mean();
   std::vector<long> tiny;
   for (long d = original; d < diag.size(); ++d)
-    if (diag[d] < tolerance * mean) tiny.push_back(d);
+    if (diag[d] < tolerance * mean && !std::binary_search(s.fixed.begin(), s.fixed.end(), d)) tiny.push_back(d);
   return tiny;
 }
 

@@ -43,9 +43,26 @@ void require_constrained(const LinearSystem& system);
 /// "DOF 40 (vector 13 = sign-enriched vector 1 of 4, component y)" (paper 3.3 numbering).
 std::string describe_dof(const LinearSystem& system, long dof);
 
-/// Enriched scalar DOFs (3k + i with k >= NP) whose diagonal K_dd is below
-/// `tolerance` times the mean diagonal of the original DOFs: the sign/branch DOFs with
-/// negligible support on one side of the cut (paper, end of 5.2). Strictly increasing.
+/// Scalar DOFs whose row of K (= column, K symmetric) holds no non-zero value (explicit zeros
+/// of the pattern count as zero): DOFs whose basis function has no support. Strictly increasing.
+std::vector<long> zero_rows(const LinearSystem& system);
+
+/// Fixes to 0 the free enriched DOFs (k >= NP) whose row of K is exactly zero and returns them,
+/// strictly increasing. Such a DOF's shifted Heaviside or branch function vanishes (with its
+/// gradient) on every integration point of its elements: the cut passes through the node or
+/// along a face so that the node's support has zero volume on one side (DESIGN.md, "known X-FEM
+/// weaknesses"). The DOF is then absent from the energy, so fixing it to 0 leaves every other
+/// value of the solution unchanged, while leaving it free makes K singular.
+/// Throws xfem::Error naming the DOF when a free ORIGINAL DOF has a zero row (a mesh point in
+/// no tet, or only in zero-volume tets): that is a broken mesh, not an enrichment artefact.
+std::vector<long> fix_unsupported_enrichment(LinearSystem& system);
+
+/// Free enriched scalar DOFs (3k + i with k >= NP, not in `system.fixed`) whose diagonal K_dd is
+/// below `tolerance` times the mean diagonal of the original DOFs: the sign/branch DOFs with
+/// negligible support on one side of the cut (paper, end of 5.2). K_dd is the energy of the
+/// DOF's unit mode, which scales with the volume of the part of its support where the
+/// enrichment function is non-zero, so `tolerance` is roughly the admitted fraction of a node's
+/// support (1e-6: a sliver of a millionth of the element volume). Strictly increasing.
 std::vector<long> tiny_enriched_dofs(const LinearSystem& system, double tolerance);
 
 /// Adds `extra` DOFs (fixed to 0) to the constrained set of `system`, keeping `fixed` sorted.

@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <string>
 
+#include "xfem/crack_front.h"
+
 namespace xfem {
 
 /// Williams near-tip displacement field of a straight cut front (modes I, II: plane strain with
@@ -20,6 +22,25 @@ struct WilliamsField {
   /// Displacement at x (metres). `side` (+1 / -1) picks the face for a point on the cut
   /// (|xb| <= 1e-9 r behind the front: theta = side * pi); 0 lets atan2 decide.
   Eigen::Vector3d displacement(const Eigen::Vector3d& x, int side = 0) const;
+
+  /// Displacement gradient du_i/dx_j at x (row i, column j), 1: singular like r^-1/2 at the
+  /// front, returned as 0 on it (r = 0). `side` as for displacement().
+  Eigen::Matrix3d gradient(const Eigen::Vector3d& x, int side = 0) const;
+
+  /// The field as a combination of the four crack-tip functions of branch_functions.h:
+  /// u(x) = sum_j column j * F_j(x), F evaluated in the frame (a, b, c = a x b, origin). Columns
+  /// are 3-vectors in global coordinates, metres / sqrt(metre). The modes lie in span{F}: that is
+  /// why X-FEM with every node branch-enriched reproduces them.
+  Eigen::Matrix<double, 3, 4> branch_coefficients() const;
+
+  /// The same coefficients for the F of another frame (a mesh's crack-tip frame, crack_front.h):
+  /// exact when that frame's front line is this field's (within `tolerance`, metres) and its a
+  /// is this a; its b may be -b (the cut's normal the other way round: F_0 and F_3 change sign).
+  /// Throws xfem::Error when the fronts differ, naming both.
+  Eigen::Matrix<double, 3, 4> branch_coefficients(const CrackTipFrame& frame, double tolerance) const;
+
+  /// This field's own crack-tip frame, R = (a | b | a x b).
+  CrackTipFrame frame() const;
 };
 
 /// Rigid motion u(x) = t + w x (x - centre) of one piece of a body.
@@ -30,6 +51,25 @@ struct RigidMotion {
   Eigen::Vector3d displacement(const Eigen::Vector3d& x) const {
     return translation + rotation.cross(x - centre);
   }
+  /// du_i/dx_j: the skew matrix of `rotation` (constant; its symmetric part, the strain, is 0).
+  Eigen::Matrix3d gradient() const;
+};
+
+/// An exact displacement field for verification (docs/FORMATS.md "Exact fields"): a Williams
+/// near-tip field, or a rigid motion per piece of a body that a cut separates completely (the
+/// piece above the cut, H = +1, on the normal's side, and the piece below, H = -1).
+struct ExactField {
+  enum class Kind { Williams, Rigid };
+  Kind kind = Kind::Williams;
+  WilliamsField williams;
+  RigidMotion above, below;  ///< Rigid: the motion of each piece
+
+  /// u(x) on `side` (+1 / -1) of the cut. Williams: side matters only on the cut face (see
+  /// WilliamsField); Rigid: side picks the piece (0 is taken as +1, the convention D1 of
+  /// docs/CLASSIFICATION.md for a point on the cut).
+  Eigen::Vector3d displacement(const Eigen::Vector3d& x, int side) const;
+  /// du_i/dx_j at x on `side`.
+  Eigen::Matrix3d gradient(const Eigen::Vector3d& x, int side) const;
 };
 
 }  // namespace xfem

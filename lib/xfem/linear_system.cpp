@@ -44,6 +44,18 @@ long lower_nonzeros(const SparseMatrix& K) {
   return nnz;
 }
 
+// A reader's own error ("not a Matrix Market file") plus the hint that names the expected producer.
+template <class Read>
+auto read_with_hint(Read read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.find(kHint) != std::string::npos) throw;
+    throw Error(what + kHint);
+  }
+}
+
 long get_count(const Json& j, const char* key, const std::string& path) {
   if (!j.contains(key) || !j[key].is_number_integer() || j[key].get<long>() < 0)
     throw Error(path + ": key '" + key + "' missing or not a non-negative integer" + kHint);
@@ -110,9 +122,10 @@ void write_linear_system(const LinearSystem& s, const std::string& dir, const st
 
 LinearSystem read_linear_system(const std::string& dir) {
   if (!std::filesystem::exists(dir)) throw Error(dir + ": no such directory" + kHint);
-  if (!std::filesystem::is_directory(dir)) throw Error(dir + ": not a directory (expected a system directory" + kHint + ")");
+  if (!std::filesystem::is_directory(dir))
+    throw Error(dir + ": not a directory (expected the system directory written by xfem-assemble)");
   const std::string json_path = join(dir, "system.json");
-  const Json j = read_json(json_path);
+  const Json j = read_with_hint([&] { return read_json(json_path); });
   LinearSystem s;
   s.np = get_count(j, "np", json_path);
   s.ns = get_count(j, "ns", json_path);
@@ -135,18 +148,18 @@ LinearSystem read_linear_system(const std::string& dir) {
   }
 
   const std::string k_path = join(dir, "K.mtx");
-  s.K = read_matrix(k_path);
+  s.K = read_with_hint([&] { return read_matrix(k_path); });
   if (s.K.rows() != dofs || s.K.cols() != dofs)
     throw Error(k_path + ": " + std::to_string(s.K.rows()) + " x " + std::to_string(s.K.cols()) +
                 ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs) + kHint);
 
   const std::string f_path = join(dir, "f.mtx");
-  s.f = read_vector(f_path);
+  s.f = read_with_hint([&] { return read_vector(f_path); });
   if (s.f.size() != dofs)
     throw Error(f_path + ": " + std::to_string(s.f.size()) + " rows, expected 3N = " + std::to_string(dofs) + kHint);
 
   const std::string d_path = join(dir, "dirichlet.mtx");
-  const SparseMatrix d = read_matrix(d_path);
+  const SparseMatrix d = read_with_hint([&] { return read_matrix(d_path); });
   if (d.rows() != dofs || d.cols() != 1)
     throw Error(d_path + ": " + std::to_string(d.rows()) + " x " + std::to_string(d.cols()) +
                 ", expected 3N x 1 = " + std::to_string(dofs) + " x 1" + kHint);
@@ -158,7 +171,7 @@ LinearSystem read_linear_system(const std::string& dir) {
   const std::string c_path = join(dir, "coordinates.mtx");
   const bool with_coordinates = j.value("coordinates", false);
   if (with_coordinates) {
-    const Eigen::VectorXd c = read_vector(c_path);
+    const Eigen::VectorXd c = read_with_hint([&] { return read_vector(c_path); });
     if (c.size() != 3 * s.np)
       throw Error(c_path + ": " + std::to_string(c.size()) + " rows, expected 3 NP = " + std::to_string(3 * s.np) + kHint);
     s.coordinates.resize(s.np, 3);

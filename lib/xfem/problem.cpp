@@ -88,6 +88,60 @@ Selector parse_selector(const Node& n) {
   return s;
 }
 
+Eigen::Vector3d unit(const Node& n) {
+  const Eigen::Vector3d v = n.vector3();
+  if (v.norm() == 0.0) n.fail("must not be zero");
+  return v.normalized();
+}
+
+double optional_number(const Node& n, const char* key, double fallback) {
+  return n.has(key) ? n.at(key).number() : fallback;
+}
+
+void check_material(const Node& n, double E, double nu) {
+  if (!(E > 0)) n.fail("E must be positive, got " + std::to_string(E));
+  if (!(nu > -1.0 && nu < 0.5)) n.fail("nu must lie in (-1, 0.5), got " + std::to_string(nu));
+}
+
+RigidMotion parse_rigid_motion(const Node& n) {
+  n.require_object({"translation", "rotation", "centre"});
+  RigidMotion m;
+  if (n.has("translation")) m.translation = n.at("translation").vector3();
+  if (n.has("rotation")) m.rotation = n.at("rotation").vector3();
+  if (n.has("centre")) m.centre = n.at("centre").vector3();
+  return m;
+}
+
+ExactField parse_exact(const Node& n, const std::optional<std::pair<double, double>>& material) {
+  n.require_object({"williams", "rigid"});
+  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid");
+  ExactField f;
+  if (n.has("williams")) {
+    const Node w = n.at("williams");
+    w.require_object({"origin", "ahead", "normal", "K1", "K2", "K3", "E", "nu"});
+    f.kind = ExactField::Kind::Williams;
+    WilliamsField& W = f.williams;
+    W.origin = w.at("origin").vector3();
+    W.a = unit(w.at("ahead"));
+    W.b = unit(w.at("normal"));
+    if (std::abs(W.a.dot(W.b)) > 1e-9) w.fail("ahead and normal must be perpendicular");
+    W.K1 = optional_number(w, "K1", 0.0);
+    W.K2 = optional_number(w, "K2", 0.0);
+    W.K3 = optional_number(w, "K3", 0.0);
+    if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
+    W.E = w.has("E") ? w.at("E").number() : material->first;
+    W.nu = w.has("nu") ? w.at("nu").number() : material->second;
+    check_material(w, W.E, W.nu);
+  } else {
+    const Node r = n.at("rigid");
+    r.require_object({"above", "below"});
+    f.kind = ExactField::Kind::Rigid;
+    if (r.has("above")) f.above = parse_rigid_motion(r.at("above"));
+    if (r.has("below")) f.below = parse_rigid_motion(r.at("below"));
+  }
+  return f;
+}
+
 std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
 
 }  // namespace
@@ -122,10 +176,25 @@ Problem parse_problem(const Json& j, const std::string& file) {
     const Node list = root.at("dirichlet");
     for (std::size_t i = 0; i < list.array_size(); ++i) {
       const Node c = list.at(i);
-      c.require_object({"name", "selector", "value"});
+      c.require_object({"name", "selector", "value", "exact", "enriched_dofs"});
       DirichletCondition d;
       d.name = optional_name(c);
       d.selector = parse_selector(c.at("selector"));
+      if (c.has("exact")) {
+        if (c.has("value")) c.fail("must have one of value, exact, not both");
+        d.exact = parse_exact(c.at("exact"), std::make_pair(p.E, p.nu));
+        if (c.has("enriched_dofs")) {
+          const Node e = c.at("enriched_dofs");
+          const std::string mode = e.string();
+          if (mode != "free" && mode != "exact") e.fail("must be \"free\" or \"exact\", got \"" + mode + "\"");
+          d.exact_enriched = mode == "exact";
+          if (d.exact_enriched && d.exact->kind != ExactField::Kind::Williams)
+            e.fail("\"exact\" needs a williams field (a rigid motion has no crack-tip coefficients)");
+        }
+        p.dirichlet.push_back(d);
+        continue;
+      }
+      if (c.has("enriched_dofs")) c.at("enriched_dofs").fail("applies to an exact condition only");
       const Node value = c.at("value");
       if (!value.j.is_array() || value.j.size() != 3) value.fail("must be a list of 3 numbers or nulls");
       bool any = false;
@@ -157,6 +226,16 @@ Problem parse_problem(const Json& j, const std::string& file) {
 Problem read_problem(const std::string& path) {
   if (!std::ifstream(path)) throw Error(path + ": cannot open the problem file (does it exist?)");
   return parse_problem(read_json(path), path);
+}
+
+ExactField parse_exact_field(const Json& j, const std::string& file, const std::string& path,
+                             const std::optional<std::pair<double, double>>& material) {
+  return parse_exact(Node{j, file, path}, material);
+}
+
+ExactField read_exact_field(const std::string& path) {
+  if (!std::ifstream(path)) throw Error(path + ": cannot open the exact-field file (does it exist?)");
+  return parse_exact_field(read_json(path), path, "");
 }
 
 std::string describe(const Problem& p, const char* list, std::size_t i) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "xfem/exact_fields.h"
 #include "xfem/json_io.h"
 #include "xfem/mesh.h"
 
@@ -24,10 +25,18 @@ struct Selector {
 
 /// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
 /// enriched DOFs stay free). A missing (null) component is left free.
+/// With `exact` set instead of `value`, every selected node gets the exact field's displacement
+/// at the node, on the node's own side of the cut (array `side`; docs/FORMATS.md "problem.json").
 struct DirichletCondition {
   std::string name;  ///< optional, for messages
   Selector selector;
   std::array<std::optional<double>, 3> value;  ///< metres
+  std::optional<ExactField> exact;             ///< the exact field prescribed instead of `value`
+  /// With `exact`: also prescribe the 4 branch DOF vectors of selected branch-enriched nodes
+  /// (the field's crack-tip coefficients, WilliamsField::branch_coefficients) and shift the
+  /// original DOF so that the discrete field equals the exact one at the node. false: the
+  /// enriched DOFs stay free (DESIGN.md), an approximation at branch nodes.
+  bool exact_enriched = false;
 };
 
 /// Traction on the boundary faces whose three nodes are all selected, Pa (N/m^2).
@@ -55,6 +64,15 @@ struct Problem {
 Problem read_problem(const std::string& path);
 /// The same from parsed JSON; `file` names it in messages.
 Problem parse_problem(const Json& j, const std::string& file);
+
+/// Parses an exact field (docs/FORMATS.md "Exact fields"): {"williams": {...}} or {"rigid": {...}}.
+/// `path` locates it in messages ("dirichlet[0].exact"); `material` (E, nu) fills a Williams
+/// field's E and nu when they are not given (problem.json), else they are required.
+/// Throws xfem::Error "<file>: <path>... <problem>" like parse_problem.
+ExactField parse_exact_field(const Json& j, const std::string& file, const std::string& path,
+                             const std::optional<std::pair<double, double>>& material = std::nullopt);
+/// Reads a JSON file holding one exact field (xfem-rmserror --exact).
+ExactField read_exact_field(const std::string& path);
 
 /// Ids of the nodes `selector` selects, increasing. `what` names the condition in messages, e.g.
 /// "problem.json: dirichlet[1] ('pulled edge')". Throws xfem::Error "<what> selects no node", or

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/dirichlet.h"
 
+#include <Eigen/Cholesky>
 #include <catch2/catch.hpp>
 
 #include "xfem/error.h"
@@ -72,4 +73,63 @@ TEST_CASE("dirichlet: tiny enriched diagonals are found against the mean origina
   xfem::fix_to_zero(s, {3, 4, 5});
   CHECK(s.fixed == std::vector<long>{0, 3, 4, 5});
   CHECK(s.fixed_values == std::vector<double>{0.5, 0.0, 0.25, 0.0});  // a prescribed value wins
+}
+
+TEST_CASE("dirichlet: enriched DOFs with an exactly zero row are fixed to 0, originals are refused", "[dirichlet]") {
+  using Catch::Matchers::Contains;
+  // NP = 1, NS = 1: DOFs 0..2 original, 3..5 sign-enriched. DOF 4's row holds only explicit zeros
+  // (xfem-assemble keeps the pattern), DOF 5's diagonal is tiny but non-zero.
+  xfem::LinearSystem s;
+  s.np = 1;
+  s.ns = 1;
+  s.n = 2;
+  s.K.resize(6, 6);
+  std::vector<Eigen::Triplet<double>> t = {{0, 0, 2}, {1, 1, 4},  {2, 2, 6},    {3, 3, 1.0},
+                                           {4, 4, 0}, {4, 0, 0},  {0, 4, 0},    {5, 5, 1e-12}};
+  s.K.setFromTriplets(t.begin(), t.end());
+  s.f = Eigen::VectorXd::Zero(6);
+  s.fixed = {0};
+  s.fixed_values = {0.5};
+  CHECK(xfem::zero_rows(s) == std::vector<long>{4});
+  CHECK(xfem::tiny_enriched_dofs(s, 1e-8) == std::vector<long>{4, 5});
+  CHECK(xfem::fix_unsupported_enrichment(s) == std::vector<long>{4});
+  CHECK(s.fixed == std::vector<long>{0, 4});
+  CHECK(s.fixed_values == std::vector<double>{0.5, 0.0});
+  // Once fixed, the zero DOF is no longer "tiny": only the tiny-but-non-zero one is left to drop.
+  CHECK(xfem::tiny_enriched_dofs(s, 1e-8) == std::vector<long>{5});
+  CHECK(xfem::fix_unsupported_enrichment(s).empty());
+
+  // A free original DOF with a zero row is a broken mesh: named, never silently fixed.
+  s.K.coeffRef(1, 1) = 0;
+  CHECK_THROWS_WITH(xfem::fix_unsupported_enrichment(s),
+                    Contains("K has an exactly zero row at DOF 1 (vector 0, original, mesh point 0, component y)"));
+  // ... unless it is constrained anyway.
+  s.fixed = {0, 1};
+  s.fixed_values = {0.5, 0.0};
+  CHECK(xfem::fix_unsupported_enrichment(s) == std::vector<long>{4});
+}
+
+TEST_CASE("dirichlet: fixing unsupported enriched DOFs leaves the rest of the solution unchanged", "[dirichlet]") {
+  // K = small SPD block (DOFs 0..2) plus an enriched DOF 3 with an all-zero row: singular as is;
+  // after the fix the solution on 0..2 is that of the block alone.
+  xfem::LinearSystem s;
+  s.np = 1;
+  s.ns = 1;
+  s.n = 2;
+  s.K.resize(6, 6);
+  std::vector<Eigen::Triplet<double>> t = {{0, 0, 3},  {1, 1, 3}, {2, 2, 3}, {0, 1, -1}, {1, 0, -1}, {1, 2, -1},
+                                           {2, 1, -1}, {3, 3, 0}, {3, 0, 0}, {0, 3, 0},  {4, 4, 2},  {5, 5, 2}};
+  s.K.setFromTriplets(t.begin(), t.end());
+  s.f = Eigen::VectorXd::Zero(6);
+  s.f << 1, 2, 3, 0, 4, 6;
+  CHECK(xfem::fix_unsupported_enrichment(s) == std::vector<long>{3});
+  const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
+  const Eigen::VectorXd x = Eigen::MatrixXd(r.K).ldlt().solve(r.f);
+  const Eigen::VectorXd u = xfem::expand_solution(r, x, s.fixed, s.fixed_values);
+  // Block solution by hand: [[3,-1,0],[-1,3,-1],[0,-1,3]] u = (1,2,3) -> u = (17/21, 10/7, 31/21).
+  CHECK_THAT(u[0], Catch::Matchers::WithinAbs(17.0 / 21, 1e-14));
+  CHECK_THAT(u[1], Catch::Matchers::WithinAbs(10.0 / 7, 1e-14));
+  CHECK_THAT(u[2], Catch::Matchers::WithinAbs(31.0 / 21, 1e-14));
+  CHECK(u[3] == 0.0);
+  CHECK(u.tail<2>() == Eigen::Vector2d(2, 3));
 }
