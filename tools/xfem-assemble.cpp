@@ -5,6 +5,7 @@
 
 #include "xfem/assembly.h"
 #include "xfem/cli.h"
+#include "xfem/error.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/linear_system.h"
 #include "xfem/problem.h"
@@ -30,7 +31,8 @@ int main(int argc, char** argv) {
   int points = 0, refine = -1;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtk/.stl/.obj/.off)")->required();
+  app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtk/.stl/.obj/.off); "
+                                       "needed when the mesh has enriched DOFs (N > NP)");
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
                                                "dirichlet, neumann, body_force)")->required();
   app.add_option("--points", points, "oversampling points requested per enriched tet: the tet is split into m^3 "
@@ -48,6 +50,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
+    if (cut_path.empty() && em.n > em.np)
+      throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
+                        " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +

@@ -5,6 +5,8 @@
 #include "xfem/cli.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
+#include "xfem/exact_error.h"
+#include "xfem/problem.h"
 #include "xfem/json_io.h"
 #include "xfem/matrix_market.h"
 #include "xfem/rms_error.h"
@@ -47,25 +49,78 @@ std::vector<int> sides_of(const xfem::TetMesh& mesh) {
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(
       "xfem-rmserror",
-      "RMS and max error of a solution against a reference solution, over the reference's nodes.\n"
-      "The solution is X-FEM (an xfem-enrich mesh, with --cut) or plain (any tet mesh). Prints the RMS on stdout.",
+      "RMS and max error of a solution against a reference solution, over the reference's nodes, or\n"
+      "against an exact field (--exact: a Williams crack field or rigid pieces, docs/FORMATS.md \"Exact\n"
+      "fields\"): then RMS over the solution's own nodes, each on its side of the cut, plus relative L2 and\n"
+      "H1-seminorm errors over the volume (--samples points per tet). The solution is X-FEM (an\n"
+      "xfem-enrich mesh, with --cut) or plain (any tet mesh; --reference only). Prints the RMS on stdout.",
       "xfem-rmserror out/enriched.vtu --cut cut.vtp --solution out/u.mtx \\\n"
-      "      --reference ref/enriched.vtu --reference-solution ref/u.mtx -o out/rms.json");
-  std::string mesh_path, cut_path, solution, reference, reference_solution, output;
+      "      --reference ref/enriched.vtu --reference-solution ref/u.mtx -o out/rms.json\n"
+      "  xfem-rmserror out/enriched.vtu --cut cut.vtp --solution out/u.mtx --exact mode1.json -o out/error.json");
+  std::string mesh_path, cut_path, solution, reference, reference_solution, output, exact_path;
   double max_rms = -1, radius = -1;
+  int samples = 26;
   auto& app = tool->app;
   app.add_option("mesh", mesh_path, "mesh of the solution: xfem-enrich output (.vtu) or a plain tet mesh")->required();
   app.add_option("--cut", cut_path, "cut surface, required for an X-FEM solution");
   app.add_option("-s,--solution", solution, "solution vector u.mtx (default: the mesh's point array 'displacement')");
-  app.add_option("-r,--reference", reference, "reference mesh (.vtu/.vtk); point array 'cut_side' gives the side of "
-                                              "duplicated nodes")->required();
+  auto* ref_option = app.add_option("-r,--reference", reference,
+                                    "reference mesh (.vtu/.vtk); point array 'cut_side' gives the side of duplicated nodes");
+  auto* exact_option = app.add_option("--exact", exact_path,
+                                      "exact field instead of a reference: JSON {\"williams\": {origin, ahead, normal, K1, K2, "
+                                      "K3, E, nu}} or {\"rigid\": {above, below}} (docs/FORMATS.md \"Exact fields\")");
+  ref_option->excludes(exact_option);
+  app.add_option("--samples", samples, "with --exact: oversampling points per tet for the L2/H1 errors (m^3 > N, "
+                                       "one at each sub-tet centroid; default 26: 27 points)")
+      ->check(CLI::Range(1, 100000));
   app.add_option("--reference-solution", reference_solution,
                  "reference solution u.mtx (default: the reference's point array 'displacement')");
   app.add_option("-o,--output", output, "JSON report");
   app.add_option("--max", max_rms, "exit 1 when the RMS error exceeds this (metres): a golden-file check");
   app.add_option("--radius", radius, "reference nodes outside the mesh but this close are evaluated at the nearest "
                                      "tet (metres; default 1e-6 of the mesh's bounding-box diagonal)");
+  app.callback([&] {  // during parsing, so that a missing one is a usage error (exit 2)
+    if (reference.empty() && exact_path.empty()) throw CLI::RequiredError("--reference or --exact");
+  });
   return xfem::cli::run(*tool, argc, argv, [&] {
+    if (!exact_path.empty()) {
+      const xfem::ExactField exact = xfem::read_exact_field(exact_path);
+      if (cut_path.empty()) throw xfem::Error(mesh_path + ": --exact needs the X-FEM mesh's cut (--cut)");
+      if (solution.empty()) throw xfem::Error(mesh_path + ": --exact needs the solution (--solution)");
+      const xfem::EnrichedMesh em = xfem::read_enriched_mesh(mesh_path, cut_path);
+      const Eigen::VectorXd u = xfem::read_vector(solution);
+      const xfem::ExactErrorReport e = xfem::exact_error(em, u, exact, samples);
+      const auto rel = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+      xfem::cli::info("RMS " + std::to_string(e.nodes.rms) + " m over " + std::to_string(e.nodes.compared) +
+                      " nodes, relative L2 " + std::to_string(rel(e.l2, e.l2_exact)) + ", relative H1 " +
+                      std::to_string(rel(e.h1, e.h1_exact)));
+      xfem::Json report;
+      report["generator"] = std::string("xfem-rmserror ") + xfem::version;
+      report["mesh"] = mesh_path;
+      report["exact"] = exact_path;
+      report["rms"] = e.nodes.rms;
+      report["max"] = e.nodes.max;
+      report["max_node"] = e.nodes.max_node;
+      report["relative_rms"] = rel(e.nodes.rms, e.nodes.reference_rms);
+      report["nodes"] = e.nodes.compared;
+      report["l2"] = e.l2;
+      report["relative_l2"] = rel(e.l2, e.l2_exact);
+      report["h1"] = e.h1;
+      report["relative_h1"] = rel(e.h1, e.h1_exact);
+      report["max_strain_error"] = e.max_strain;
+      report["samples"] = e.samples;
+      report["volume"] = e.volume;
+      report["n_vectors"] = em.n;
+      report["n_unknowns"] = 3 * em.n;
+      report["np"] = em.np;
+      report["ns"] = em.ns;
+      report["nb"] = em.nb;
+      if (!output.empty()) xfem::write_json(report, output);
+      std::printf("%.17g\n", e.nodes.rms);
+      if (max_rms >= 0 && e.nodes.rms > max_rms)
+        throw xfem::Error("RMS error " + std::to_string(e.nodes.rms) + " exceeds --max " + std::to_string(max_rms));
+      return;
+    }
     const xfem::TetMesh ref_mesh = xfem::read_tet_mesh(reference);
     const xfem::ReferenceSamples ref{ref_mesh.points, nodal_displacements(ref_mesh, reference, reference_solution),
                                      sides_of(ref_mesh)};

@@ -38,8 +38,13 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
 Eigen::VectorXd load_vector(const EnrichedMesh& em, const Problem& problem);
 
 /// The Dirichlet data: scalar DOFs 3k + i of the ORIGINAL nodal DOFs of the selected nodes with
-/// their values, increasing. Throws xfem::Error naming the condition when it selects no node, or
-/// both conditions when two prescribe different values for the same DOF.
+/// their values, increasing. An exact condition gives each node the field's displacement at the
+/// node on its side (em.side); with exact_enriched, a selected branch-enriched node also gets its
+/// 4 branch DOF vectors fixed to the field's crack-tip coefficients and its original DOF shifted
+/// so that the discrete displacement at the node is exact (docs/FORMATS.md "problem.json").
+/// Throws xfem::Error naming the condition when it selects no node, when a Williams field's front
+/// is not the mesh's (exact_enriched), or both conditions when two prescribe different values for
+/// the same DOF.
 void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<long>& fixed,
                     std::vector<double>& values);
 

@@ -9,5 +9,6 @@ set xlabel "unknowns 3N"
 set ylabel "RMS error against the reference (m)"
 set title "Beam benchmark: X-FEM on unstructured meshes vs CG-FEM on cut-aligned grids"
 set key top right
-plot csv using ($1 eq "xfem" ? $5 : 1/0):7 skip 1 with linespoints lw 2 pt 7 title "X-FEM (unstructured, not cut-aligned)", \
-     csv using ($1 eq "cg" ? $5 : 1/0):7 skip 1 with linespoints lw 2 pt 5 title "CG-FEM (cut-aligned, doubled nodes)"
+plot csv using (strcol(1) eq "xfem" ? $5 : 1/0):7 skip 1 with linespoints lw 2 pt 7 title "X-FEM (unstructured, not cut-aligned)", \
+     csv using (strcol(1) eq "xgrid" ? $5 : 1/0):7 skip 1 with linespoints lw 2 pt 9 title "X-FEM (structured grid, not cut-aligned)", \
+     csv using (strcol(1) eq "cg" ? $5 : 1/0):7 skip 1 with linespoints lw 2 pt 5 title "CG-FEM (cut-aligned, doubled nodes)"

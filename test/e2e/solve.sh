@@ -50,6 +50,29 @@ grep -q "warning: 3 enriched DOFs have a diagonal below" "$S/err.txt" || fail "n
 grep -q "dropped 3 enriched DOFs" "$S/err.txt" || fail "no drop message"
 [ "$(tail -n 3 "$S/u_drop.mtx" | tr '\n' ' ')" = "0 0 0 " ] || fail "dropped DOFs must be 0"
 
+# Exactly zero enriched rows (no support): eliminated without a flag, one warning, the rest of the
+# solution unchanged (the zero DOF is absent from the energy, so u equals the beam_1x2x4 one).
+cp -r "$DATA/beam_1x2x4_tiny" "$S/zero"
+awk 'NR<=2 {print; next} $1>=91 || $2>=91 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4_tiny/K.mtx" >"$S/zero/K.mtx"
+"$SOLVE" "$S/zero" -o "$S/u_zero.mtx" --report "$S/zero.json" 2>"$S/err.txt" || fail "zero rows must solve: $(cat "$S/err.txt")"
+[ "$(grep -c warning "$S/err.txt")" -eq 1 ] || fail "expected one warning line: $(cat "$S/err.txt")"
+grep -qF "warning: 3 enriched DOFs (1 vector) have an exactly zero row in K (no support on one side of the cut): fixed to 0; first DOF 90 (vector 30, sign-enriched vector 0 of 1, component x)" \
+  "$S/err.txt" || fail "zero-row warning: $(cat "$S/err.txt")"
+grep -q '"unsupported_enriched_dofs": 3' "$S/zero.json" || fail "report must count the unsupported DOFs"
+[ "$(tail -n 3 "$S/u_zero.mtx" | tr '\n' ' ')" = "0 0 0 " ] || fail "unsupported DOFs must be 0"
+d=$(maxdiff <(head -n 92 "$S/u_zero.mtx") "$S/u.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-14)}' || fail "zero DOF changed the solution by $d"
+# ... while a zero row on a free ORIGINAL DOF (1-based row 40) stays an error.
+cp -r "$DATA/beam_1x2x4" "$S/zero_orig"
+awk 'NR<=2 {print; next} $1==40 || $2==40 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4/K.mtx" >"$S/zero_orig/K.mtx"
+expect_error "K has an exactly zero row at DOF 39 (vector 13, original, mesh point 13, component x)" "$S/zero_orig"
+
+# Wrong-kind inputs: a mesh instead of the directory, a mesh renamed K.mtx.
+printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid">\n</VTKFile>\n' >"$S/mesh.vtu"
+expect_error "mesh.vtu: not a directory (expected the system directory written by xfem-assemble)" "$S/mesh.vtu"
+cp -r "$DATA/beam_1x2x4" "$S/wrong_kind"; cp "$S/mesh.vtu" "$S/wrong_kind/K.mtx"
+expect_error "K.mtx: not a Matrix Market file" "$S/wrong_kind"
+grep -qF "(is this xfem-assemble output?)" "$S/err.txt" || fail "wrong-kind K.mtx: no hint: $(cat "$S/err.txt")"
+
 # PETSc: agrees with CHOLMOD within its tolerance, on 1 and 2 MPI ranks.
 if ! "$SOLVE" --version | grep -q petsc; then
   echo "SKIP PETSc part: xfem-solve was built without PETSc"; exit 0

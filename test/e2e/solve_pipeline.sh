@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# xfem-solve at the end of the real pipeline (xfem-mesh -> classify -> enrich -> assemble -> solve):
+# the uncut beam pulled as in the paper's benchmark (DESIGN.md): the pulled edge at exactly
+# (0, 0, 0.02), the fixed face at exactly 0, residual < 1e-10, both backends; and an unstructured
+# cut beam whose enrichment has zero-support DOFs, solved without a flag.
+set -u
+S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
+B=$XFEM_BIN; PROBLEM=$XFEM_SOURCE/pipelines/beam/problem.json
+fail() { echo "FAIL: $*"; exit 1; }
+json_number() { sed -n "s/.*\"$1\": *\([^,]*\).*/\1/p" "$2"; }
+
+# 1. The uncut beam, 3 x 6 x 20 cubes. xfem-classify without --cut gives a plain mesh (no
+#    enrichment); xfem-assemble needs a cut file but has no enriched tet to use it on.
+"$B/xfem-mesh" -q box --cells 3 6 20 --hi 0.03 0.06 0.2 -o "$S/box.vtu" || fail "xfem-mesh box"
+"$B/xfem-mesh" -q cut-rect --beam-cut -o "$S/cut.vtp" || fail "xfem-mesh cut-rect"
+"$B/xfem-classify" -q "$S/box.vtu" -o "$S/classified.vtu" || fail "classify"
+"$B/xfem-enrich" -q "$S/classified.vtu" -o "$S/enriched.vtu" || fail "enrich"
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/sys" || fail "assemble"
+grep -q '"n": 588,' "$S/sys/system.json" || fail "expected N = NP = 4*7*21 = 588: $(cat "$S/sys/system.json")"
+"$B/xfem-solve" -q "$S/sys" -o "$S/u.mtx" --report "$S/solve.json" || fail "solve"
+res=$(json_number relative_residual "$S/solve.json")
+awk -v r="$res" 'BEGIN{exit !(r < 1e-10)}' || fail "CHOLMOD residual $res >= 1e-10"
+
+# The boundary nodes found from the coordinates (not from dirichlet.mtx): pulled edge
+# z >= 0.199 and x <= 0.001 (7 nodes), fixed face z <= 0.001 (28 nodes); values compared exactly.
+check_bc() {  # check_bc <u.mtx>
+  paste <(tail -n +3 "$S/sys/coordinates.mtx" | paste - - -) <(tail -n +3 "$1" | head -n 1764 | paste - - -) |
+    awk '{x=$1; z=$3; ux=$4; uy=$5; uz=$6}
+         z >= 0.199 && x <= 0.001 {pulled++; if (ux != 0 || uy != 0 || uz != 0.02) {print "pulled node " NR-1 ": " ux, uy, uz; bad=1}}
+         z <= 0.001 {fixed++; if (ux != 0 || uy != 0 || uz != 0) {print "fixed node " NR-1 ": " ux, uy, uz; bad=1}}
+         z > 0.1 && uz <= 0 {print "node " NR-1 " above mid-height does not move up: " uz; bad=1}
+         END {if (pulled != 7 || fixed != 28) {print "pulled " pulled ", fixed " fixed; bad=1}; exit bad}'
+}
+check_bc "$S/u.mtx" || fail "CHOLMOD: boundary values not exact"
+
+if "$B/xfem-solve" --version | grep -q petsc; then
+  "$B/xfem-solve" -q "$S/sys" -o "$S/u_petsc.mtx" --backend petsc --rtol 1e-11 --report "$S/petsc.json" || fail "petsc"
+  res=$(json_number relative_residual "$S/petsc.json")
+  awk -v r="$res" 'BEGIN{exit !(r < 1e-10)}' || fail "PETSc residual $res >= 1e-10"
+  check_bc "$S/u_petsc.mtx" || fail "PETSc: boundary values not exact"
+else
+  echo "SKIP PETSc part: xfem-solve was built without PETSc"
+fi
+
+# 2. An unstructured beam with the paper's cut: some sign nodes lie on the cut plane, so their
+#    enriched rows of K are exactly zero; xfem-solve fixes them to 0 with one warning, no flag.
+"$B/xfem-mesh" -q unstructured-box --hi 0.03 0.06 0.2 --size 0.006 -o "$S/m.vtu" || fail "unstructured-box"
+"$B/xfem-classify" -q "$S/m.vtu" --cut "$S/cut.vtp" -o "$S/mc.vtu" || fail "classify (cut)"
+"$B/xfem-enrich" -q "$S/mc.vtu" -o "$S/me.vtu" || fail "enrich (cut)"
+"$B/xfem-assemble" -q "$S/me.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/msys" 2>"$S/assemble.txt" ||
+  fail "assemble (cut)"
+"$B/xfem-solve" "$S/msys" -o "$S/mu.mtx" --report "$S/msolve.json" 2>"$S/solve.txt" ||
+  fail "cut beam with zero-support DOFs must solve: $(cat "$S/solve.txt")"
+res=$(json_number relative_residual "$S/msolve.json")
+awk -v r="$res" 'BEGIN{exit !(r < 1e-10)}' || fail "cut beam residual $res >= 1e-10"
+zero=$(json_number unsupported_enriched_dofs "$S/msolve.json")
+if grep -q "have no support" "$S/assemble.txt"; then
+  [ "$zero" -gt 0 ] || fail "xfem-assemble reported unsupported DOFs, xfem-solve found none"
+  grep -q "warning: $zero enriched DOFs (.*) have an exactly zero row in K" "$S/solve.txt" ||
+    fail "no zero-row warning: $(cat "$S/solve.txt")"
+else
+  echo "NOTE: this mesh has no zero-support enriched DOF any more (the mesher changed?)"
+fi
+rm -rf "$S"
+echo "solve_pipeline e2e: ok"
