@@ -108,6 +108,7 @@ int main(int argc, char** argv) {
       report["h1"] = e.h1;
       report["relative_h1"] = rel(e.h1, e.h1_exact);
       report["max_strain_error"] = e.max_strain;
+      report["max_gap_error"] = e.max_gap_error;
       report["samples"] = e.samples;
       report["volume"] = e.volume;
       report["n_vectors"] = em.n;

@@ -56,8 +56,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-iterations", max_iterations, "PETSc: CG iteration limit (default 10000)")
       ->check(CLI::PositiveNumber);
   app.add_option("--near-null-space", near_null, "PETSc: GAMG near-null space: rigid (rigid-body modes of the original "
-                                                 "DOFs, needs coordinates.mtx; default) or none")
-      ->check(CLI::IsMember({"rigid", "none"}));
+                                                 "DOFs, needs coordinates.mtx; default), rigid-enriched (also the "
+                                                 "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
+      ->check(CLI::IsMember({"rigid", "rigid-enriched", "none"}));
   app.add_option("--drop-tiny-enrichment", drop_tol,
                  "fix to 0 the enriched DOFs whose diagonal of K is below TOL times the mean diagonal of the original "
                  "DOFs: sign/branch DOFs with a tiny but non-zero support on one side of the cut (TOL ~ the volume "

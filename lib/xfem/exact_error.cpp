@@ -44,7 +44,32 @@ ExactErrorReport exact_error(const EnrichedMesh& em, const Eigen::VectorXd& u, c
     r.nodes.reference_rms = std::sqrt(ref_sum / (3.0 * r.nodes.compared));
   }
 
-  // 2. Volume integrals by oversampling. A sample's side: that of the tet's nodes when the tet is
+  // 2. The gap, at the points where the edges of cut tets cross the cut (found by bisection on
+  //    H(x)): both sides of such a tet have volume, and a rigid motion extends to every x. Only
+  //    tets whose 4 nodes are all enriched (|C| >= 8) carry both sides' fields; one with a node
+  //    left unenriched (rule D3, docs/CLASSIFICATION.md) has no volume on that node's other side.
+  if (exact.kind == ExactField::Kind::Rigid && em.cut && !em.cut_class.empty()) {
+    r.max_gap_error = 0.0;
+    for (int t = 0; t < em.tets(); ++t) {
+      if (em.cut_class[t] == 0 || em.size(t) < 8) continue;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          Eigen::Vector3d p = mesh.points.row(mesh.tets(t, i)).transpose(), q = mesh.points.row(mesh.tets(t, j)).transpose();
+          const int hp = em.cut->side(p);
+          if (hp == em.cut->side(q)) continue;
+          for (int k = 0; k < 60; ++k) {
+            const Eigen::Vector3d m = 0.5 * (p + q);
+            (em.cut->side(m) == hp ? p : q) = m;
+          }
+          const Eigen::Vector3d x = 0.5 * (p + q);
+          const Eigen::Vector3d gap = displacement_at(em, t, x, +1, u) - displacement_at(em, t, x, -1, u);
+          const Eigen::Vector3d gap_exact = exact.displacement(x, +1) - exact.displacement(x, -1);
+          r.max_gap_error = std::max(r.max_gap_error, (gap - gap_exact).norm());
+        }
+    }
+  }
+
+  // 3. Volume integrals by oversampling. A sample's side: that of the tet's nodes when the tet is
   //    uncut and they agree (no cut query), else H(x) from the cut surface.
   const Quadrature rule = oversampling_quadrature(points);
   double l2 = 0, l2e = 0, h1 = 0, h1e = 0;

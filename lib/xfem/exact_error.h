@@ -20,6 +20,11 @@ struct ExactErrorReport {
   /// max over the sample points of |eps(u_h) - eps(u)| (Frobenius norm of the strain error): the
   /// strain itself for a rigid exact field.
   double max_strain = 0.0;
+  /// Rigid fields only: max of |[u_h] - [u]|, [.] = u(x, +1) - u(x, -1) the opening (the gap
+  /// between the pieces), over the points where the edges of cut tets whose nodes are all
+  /// enriched cross the cut (the other tets carry one side's field only); -1 for a
+  /// Williams field or without a cut.
+  double max_gap_error = -1.0;
   long samples = 0;     ///< sample points evaluated
   double volume = 0.0;  ///< sum of the tet volumes, m^3
 };

@@ -45,8 +45,14 @@ struct Objects {
 
 // The 6 rigid-body modes of the original DOFs (translations, rotations about the centroid),
 // zero on enriched DOFs, orthonormalised (MatNullSpaceCreate requires it). 3N x 6.
-Eigen::MatrixXd rigid_modes(const LinearSystem& s) {
+// With `enriched_translations`, each enriched 3-vector also gets the three translations (the
+// relative slip of the two sides of the cut, a low-energy motion), so that GAMG's coarse spaces
+// represent the enriched DOFs too instead of leaving them to the smoother alone.
+Eigen::MatrixXd rigid_modes(const LinearSystem& s, bool enriched_translations) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * s.n, 6);
+  if (enriched_translations)
+    for (long k = s.np; k < s.n; ++k)
+      for (int i = 0; i < 3; ++i) R(3 * k + i, i) = 1;
   const Eigen::RowVector3d c = s.coordinates.colwise().mean();
   for (long k = 0; k < s.np; ++k) {
     const Eigen::RowVector3d p = s.coordinates.row(k) - c;
@@ -143,11 +149,11 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   check(MatSetOption(o.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
 
   // 3. Near-null space: the rigid-body modes, the coarse space GAMG must represent.
-  if (options.near_null_space == "rigid") {
+  if (options.near_null_space == "rigid" || options.near_null_space == "rigid-enriched") {
     if (s.coordinates.size() == 0)
       throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.mtx in the "
                   "system directory); use --near-null-space none to go without");
-    const Eigen::MatrixXd R = rigid_modes(s);
+    const Eigen::MatrixXd R = rigid_modes(s, options.near_null_space == "rigid-enriched");
     o.modes.resize(6, nullptr);
     for (int m = 0; m < 6; ++m) {
       check(VecDuplicate(o.x, &o.modes[m]), "VecDuplicate");
@@ -159,7 +165,7 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
     check(MatNullSpaceCreate(comm, PETSC_FALSE, 6, o.modes.data(), &o.near_null), "MatNullSpaceCreate");
     check(MatSetNearNullSpace(o.A, o.near_null), "MatSetNearNullSpace");
   } else if (options.near_null_space != "none") {
-    throw Error("unknown near-null space '" + options.near_null_space + "' (rigid or none)");
+    throw Error("unknown near-null space '" + options.near_null_space + "' (rigid, rigid-enriched or none)");
   }
 
   // 4. CG + GAMG, the tolerance on the true (unpreconditioned) residual.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/exact_fields.h"
 
+#include "xfem/branch_functions.h"
+
 #include <catch2/catch.hpp>
 
 namespace {
@@ -83,4 +85,35 @@ TEST_CASE("exact_fields: a rigid motion has no strain", "[exact_fields]") {
   Eigen::Matrix3d G;
   for (int j = 0; j < 3; ++j) G.col(j) = m.displacement(x + Eigen::Vector3d::Unit(j)) - m.displacement(x);
   CHECK((G + G.transpose()).norm() < 1e-15);
+}
+
+TEST_CASE("exact_fields: Williams fields are combinations of the crack-tip functions", "[exact_fields]") {
+  // u = C F(x) in the field's own frame and in a frame with the normal reversed; gradient = C dF.
+  auto mode = GENERATE(0, 1, 2);
+  const auto f = tilted(mode == 0, mode == 1, mode == 2);
+  xfem::CrackTipFrame flipped = f.frame();
+  flipped.R.col(1) *= -1;
+  flipped.R.col(2) *= -1;
+  flipped.origin += 0.3 * f.a.cross(f.b);  // another point of the same front line
+  const auto C = f.branch_coefficients(), C2 = f.branch_coefficients(flipped, 1e-12);
+  for (double angle : {-3.0, -1.0, 0.5, 2.9}) {
+    const Eigen::Vector3d x = f.origin + 0.07 * (std::cos(angle) * f.a + std::sin(angle) * f.b) + 0.01 * f.a.cross(f.b);
+    const Eigen::Vector3d u = f.displacement(x);
+    CAPTURE(mode, angle);
+    CHECK((C * xfem::branch_functions(f.frame(), x).F - u).norm() < 1e-14 * u.norm());
+    CHECK((C2 * xfem::branch_functions(flipped, x).F - u).norm() < 1e-14 * u.norm());
+    Eigen::Matrix3d G;
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d e = 1e-6 * Eigen::Vector3d::Unit(j);
+      G.col(j) = (f.displacement(x + e) - f.displacement(x - e)) / 2e-6;
+    }
+    CHECK((f.gradient(x) - G).norm() < 1e-6 * G.norm());  // central differences: O(h^2) ~ 1e-10 relative
+  }
+}
+
+TEST_CASE("exact_fields: a frame on another front line is refused", "[exact_fields]") {
+  const auto f = tilted(1, 0, 0);
+  xfem::CrackTipFrame other = f.frame();
+  other.origin += 0.01 * f.b;
+  CHECK_THROWS_WITH(f.branch_coefficients(other, 1e-6), Catch::Contains("is not the mesh's cut front"));
 }

@@ -97,7 +97,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
   }
   SECTION("unknown key") {
     j["dirichlet"][1]["valeu"] = 1;
-    CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value)");
+    CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value, exact, enriched_dofs)");
   }
   SECTION("unknown top-level key") {
     j["materials"] = 1;
@@ -144,4 +144,26 @@ TEST_CASE("problem: describe names the condition for messages", "[problem]") {
   const xfem::Problem p = xfem::parse_problem(beam(), "in/problem.json");
   CHECK(xfem::describe(p, "dirichlet", 1) == "in/problem.json: dirichlet[1] ('pulled edge')");
   CHECK(xfem::describe(p, "neumann", 0) == "in/problem.json: neumann[0]");
+}
+
+TEST_CASE("problem: exact Dirichlet fields parse, taking E and nu from the material", "[problem]") {
+  xfem::Json j = beam();
+  j["dirichlet"][0] = xfem::Json::parse(R"({"selector": {"box": {"lo": [0, 0, 0], "hi": [1, 1, 1]}},
+      "exact": {"williams": {"origin": [0, 0, 0.1], "ahead": [2, 0, 0], "normal": [0, 0, 1], "K1": 3}},
+      "enriched_dofs": "exact"})");
+  const xfem::Problem p = xfem::parse_problem(j, "problem.json");
+  REQUIRE(p.dirichlet[0].exact);
+  CHECK(p.dirichlet[0].exact_enriched);
+  CHECK(p.dirichlet[0].exact->williams.a.isApprox(Eigen::Vector3d::UnitX()));
+  CHECK(p.dirichlet[0].exact->williams.E == p.E);
+  CHECK(p.dirichlet[0].exact->williams.K1 == 3);
+  j["dirichlet"][0]["exact"] = xfem::Json::parse(R"({"williams": {"origin": [0, 0, 0], "ahead": [1, 0, 0], "normal": [1, 1, 0]}})");
+  CHECK_THAT(error_of(j), Catch::Contains("dirichlet[0].exact.williams ahead and normal must be perpendicular"));
+  j["dirichlet"][0]["exact"] = xfem::Json::parse(R"({"rigid": {"above": {"translation": [1, 0, 0]}}})");
+  CHECK_THAT(error_of(j), Catch::Contains("needs a williams field"));
+  j["dirichlet"][0]["enriched_dofs"] = "maybe";
+  CHECK_THAT(error_of(j), Catch::Contains("must be \"free\" or \"exact\""));
+  j["dirichlet"][0].erase("enriched_dofs");
+  j["dirichlet"][0]["value"] = {0, 0, 0};
+  CHECK_THAT(error_of(j), Catch::Contains("one of value, exact, not both"));
 }
