@@ -11,6 +11,7 @@ packages=(
   libpetsc-real-dev openmpi-bin                    # iterative, MPI-capable solve
   catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
   xvfb xauth gnuplot-nox python3                   # headless PNG snapshots, plots, tables
+  time                                             # GNU /usr/bin/time: peak memory in bench/bench.py
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
       "directory xfem-solve reads: K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx, system.json.",
       "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json --points 30 -o out/system");
   std::string input, cut_path, problem_path, output;
-  int points = 0, refine = -1;
+  int points = 0, refine = -1, order = 0;
+  std::string rule;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
   app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtk/.stl/.obj/.off); "
@@ -43,10 +44,20 @@ int main(int argc, char** argv) {
                                      "(0 = the paper's uniform rule; default: problem.json's integration.refine, "
                                      "else 0); small pieces cut off a tet then get integration points")
       ->check(CLI::Range(0, 8));
+  app.add_option("--rule", rule, "integration of tets with enriched DOFs: oversampling (the paper's) or conforming "
+                                 "(cut elements split along the cut, Gauss rules collapsed onto the cut front; "
+                                 "default: problem.json's integration.rule, else oversampling)")
+      ->check(CLI::IsMember({"oversampling", "conforming"}));
+  app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
+                                   "(default: problem.json's integration.order, else 5)")
+      ->check(CLI::Range(1, 20));
   app.add_option("-o,--output", output, "system directory (created if missing)")->required();
   return xfem::cli::run(*tool, argc, argv, [&] {
     const double start = xfem::cli::now();
-    const xfem::Problem problem = xfem::read_problem(problem_path);
+    xfem::Problem problem = xfem::read_problem(problem_path);
+    if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
+    if (order > 0) problem.order = order;
+    const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
     std::vector<std::string> warnings;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
@@ -57,8 +68,9 @@ int main(int argc, char** argv) {
     if (refine < 0) refine = problem.refine;
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
-                      std::to_string(problem.neumann.size()) + " Neumann conditions, --points " + std::to_string(points) +
-                      ", --refine " + std::to_string(refine));
+                      std::to_string(problem.neumann.size()) + " Neumann conditions, " +
+                      (conforming ? "--rule conforming --order " + std::to_string(problem.order)
+                                  : "--points " + std::to_string(points) + ", --refine " + std::to_string(refine)));
     const double read = xfem::cli::now() - start;
 
     xfem::AssemblyStats s;
@@ -75,15 +87,15 @@ int main(int argc, char** argv) {
                     " non-zeros in the lower triangle, " + std::to_string(system.fixed.size()) + " fixed; " +
                     std::to_string(system.pieces.size()) + " piece(s), " + std::to_string(constrained) + " constrained");
     xfem::cli::info("tets: " + std::to_string(s.standard_tets) + " plain (closed form), " +
-                    std::to_string(s.enriched_tets) + " enriched (oversampled)");
+                    std::to_string(s.enriched_tets) + " enriched (" + (conforming ? "conforming rule)" : "oversampled)"));
     xfem::cli::info("time: read " + fixed3(read) + " s, pattern " + fixed3(s.pattern_seconds) + " s, plain tets " +
                     fixed3(s.standard_seconds) + " s, enriched tets " + fixed3(s.enriched_seconds) + " s, loads " +
                     fixed3(s.load_seconds) + " s, write " + fixed3(write) + " s");
     const std::vector<long> unsupported = xfem::unsupported_dofs(system.K, system.np);
     if (!unsupported.empty())
       xfem::cli::warn(std::to_string(unsupported.size()) + " enriched DOFs have no support (zero rows in K), first vector " +
-                      std::to_string(unsupported.front()) + ": the cut passes through nodes or faces of their elements, "
-                      "leaving no volume on one side (xfem-solve --drop-tiny-enrichment removes them)");
+                      std::to_string(unsupported.front()) + ": no integration point lies in their support on one side "
+                      "of the cut (a thin sliver; more --points or --refine help); xfem-solve fixes them to 0");
     for (std::size_t i = 0; i < system.pieces.size(); ++i)
       if (!system.pieces[i].constrained)
         xfem::cli::warn("piece " + std::to_string(i) + " (" + std::to_string(system.pieces[i].tets) +

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "xfem/branch_functions.h"
+#include "xfem/conforming_quadrature.h"
 #include "xfem/error.h"
 #include "xfem/pieces.h"
 #include "xfem/tet_shape.h"
@@ -172,7 +173,8 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 }  // namespace
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
-                              AssemblyStats* stats, const std::function<void(double)>& progress) {
+                              AssemblyStats* stats, const std::function<void(double)>& progress,
+                              int conforming_order) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -222,8 +224,17 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   s.standard_seconds += seconds_since(clock);
   clock = std::chrono::steady_clock::now();
   Eigen::MatrixXd k;
+  // The conforming rule (conforming_quadrature.h) splits the cut elements once, then integrates
+  // every enriched tet on its own points; otherwise the oversampling `rule`.
+  const CutElementSplits splits = conforming_order > 0 ? split_cut_elements(em) : CutElementSplits();
+  PointRule points;
   for (std::size_t i = 0; i < enriched.size(); ++i) {
-    element_stiffness(em, enriched[i], rule, material, k);
+    if (conforming_order > 0) {
+      conforming_rule(em, splits, enriched[i], conforming_order, points);
+      element_stiffness_at_points(em, enriched[i], points, material, k);
+    } else {
+      element_stiffness(em, enriched[i], rule, material, k);
+    }
     scatter(em, p, outer, enriched[i], k, values);
   }
   s.enriched_tets += static_cast<long>(enriched.size());
@@ -359,7 +370,9 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   sys.ns = em.ns;
   sys.nb = em.nb;
   sys.n = em.n;
-  sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress);
+  const bool conforming = problem.rule == Problem::Rule::Conforming;
+  sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
+                           conforming ? problem.order : 0);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
   dirichlet_data(em, problem, sys.fixed, sys.fixed_values);

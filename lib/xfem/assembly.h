@@ -26,10 +26,12 @@ struct AssemblyStats {
 /// N/m, in compressed column form with sorted rows. The pattern is precomputed from the extended
 /// connectivity (every pair of DOFs sharing a tet, explicit zeros included, so the pattern does not
 /// depend on the values) and element matrices are scattered straight into it: tets with |C| = 4
-/// plain DOFs use the closed-form linear-tet stiffness, the others the oversampling `rule`.
+/// plain DOFs use the closed-form linear-tet stiffness, the others the oversampling `rule`, or, with
+/// conforming_order n > 0, the cut-conforming rule of order n (conforming_quadrature.h; `rule` unused).
 /// `progress` (optional) gets the fraction of tets done.
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
-                              AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {});
+                              AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
+                              int conforming_order = 0);
 
 /// The load vector f (3N, newtons; paper formula (7)) on the ORIGINAL DOFs only (DESIGN.md):
 /// body force b V/4 to each node of each tet (exact for linear N), traction t A/3 to each node of
@@ -56,7 +58,8 @@ std::vector<long> unsupported_dofs(const SparseMatrix& K, long first);
 /// Everything xfem-assemble writes: K, f, Dirichlet data, counts, the connected pieces
 /// (find_pieces of pieces.h) and the point coordinates. `points` and `refine` are the
 /// oversampling request and its refinement levels at the cut (problem.points / problem.refine
-/// unless the caller overrides them).
+/// unless the caller overrides them); problem.rule = Conforming uses the conforming rule of
+/// order problem.order instead.
 LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int points, int refine,
                              AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {});
 

@@ -160,11 +160,27 @@ Problem parse_problem(const Json& j, const std::string& file) {
   if (!(p.nu > -1.0 && p.nu < 0.5)) material.at("nu").fail("must lie in (-1, 0.5), got " + material.at("nu").j.dump());
   if (root.has("integration")) {
     const Node integration = root.at("integration");
-    integration.require_object({"points", "refine"});
-    const Node points = integration.at("points");
-    if (!points.j.is_number_integer() || points.j.get<long>() < 1 || points.j.get<long>() > 100000)
-      points.fail("must be an integer in 1..100000, got " + points.j.dump());
-    p.points = points.j.get<int>();
+    integration.require_object({"points", "refine", "rule", "order"});
+    if (integration.has("rule")) {
+      const Node rule = integration.at("rule");
+      const std::string name = rule.string();
+      if (name != "oversampling" && name != "conforming")
+        rule.fail("must be \"oversampling\" or \"conforming\", got \"" + name + "\"");
+      p.rule = name == "conforming" ? Problem::Rule::Conforming : Problem::Rule::Oversampling;
+    }
+    if (integration.has("order")) {
+      const Node order = integration.at("order");
+      if (!order.j.is_number_integer() || order.j.get<long>() < 1 || order.j.get<long>() > 20)
+        order.fail("must be an integer in 1..20, got " + order.j.dump());
+      p.order = order.j.get<int>();
+    }
+    // points is required for the paper's rule only (a conforming rule needs none).
+    if (p.rule == Problem::Rule::Oversampling || integration.has("points")) {
+      const Node points = integration.at("points");
+      if (!points.j.is_number_integer() || points.j.get<long>() < 1 || points.j.get<long>() > 100000)
+        points.fail("must be an integer in 1..100000, got " + points.j.dump());
+      p.points = points.j.get<int>();
+    }
     if (integration.has("refine")) {
       const Node refine = integration.at("refine");
       if (!refine.j.is_number_integer() || refine.j.get<long>() < 0 || refine.j.get<long>() > 8)

@@ -53,6 +53,12 @@ struct Problem {
   double nu = 0.0;      ///< Poisson's ratio, in (-1, 0.5)
   int points = 30;      ///< oversampling points requested per enriched tet (paper: 30 for the beam)
   int refine = 0;       ///< levels of refinement at the cut in cut tets (0 = the paper's rule)
+  /// How tets with enriched DOFs are integrated: the paper's oversampling (points, refine), or the
+  /// cut-conforming, front-singular rule of conforming_quadrature.h with `order` Gauss points per
+  /// direction of every sub-tet.
+  enum class Rule { Oversampling, Conforming };
+  Rule rule = Rule::Oversampling;
+  int order = 5;        ///< conforming rule: Gauss points per direction (1..20)
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
@@ -60,7 +66,7 @@ struct Problem {
 
 /// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
 /// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
-/// refine outside 0..8, a zero normal, an empty box, e.g. "problem.json: material.E must be positive, got -3".
+/// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box, e.g. "problem.json: material.E must be positive, got -3".
 Problem read_problem(const std::string& path);
 /// The same from parsed JSON; `file` names it in messages.
 Problem parse_problem(const Json& j, const std::string& file);

@@ -66,3 +66,39 @@ TEST_CASE("matrix_market: bad files are named with the problem", "[matrix_market
   CHECK_THROWS_WITH(xfem::read_vector(path), Catch::Contains("line 4: expected a number"));
   CHECK_THROWS_WITH(xfem::read_matrix(scratch("missing.mtx")), Catch::Contains("cannot open"));
 }
+
+TEST_CASE("matrix_market: a large matrix written in blocks by several threads comes back exactly, in order",
+          "[matrix_market]") {
+  // 200,000 columns x 3 stored lower entries = 600,000 entries: 2 blocks of 2^18 and more, formatted
+  // concurrently and written in column order; the upper-triangle entries are not written.
+  const int n = 200000;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < n; ++j) {
+    t.emplace_back(j, j, 4.0 + j / 7.0);
+    if (j + 1 < n) t.emplace_back(j + 1, j, -1.0 / (j + 3.0)), t.emplace_back(j, j + 1, -1.0 / (j + 3.0));
+    if (j + 5 < n) t.emplace_back(j + 5, j, 1e-3 * j), t.emplace_back(j, j + 5, 1e-3 * j);
+  }
+  xfem::SparseMatrix K(n, n);
+  K.setFromTriplets(t.begin(), t.end());
+  const auto path = scratch("K_large.mtx");
+  xfem::write_symmetric_matrix(K, path);
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  CHECK(line == "200000 200000 599994");
+  long lines = 0, last_column = 0;
+  bool ordered = true;
+  long row = 0, column = 0;
+  double value = 0;
+  while (in >> row >> column >> value) {
+    ordered = ordered && column >= last_column && row >= column;
+    last_column = column;
+    ++lines;
+  }
+  CHECK(lines == 599994);
+  CHECK(ordered);
+  const xfem::SparseMatrix back = xfem::read_matrix(path);
+  CHECK((back - K).norm() == 0.0);
+  std::remove(path.c_str());
+}

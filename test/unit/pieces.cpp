@@ -71,3 +71,22 @@ TEST_CASE("pieces: an uncut body is one piece, and mismatched arrays are refused
   m.cut_class.pop_back();
   CHECK_THROWS_WITH(xfem::find_pieces(m, constrained_at_z(m, 3.0)), Catch::Matchers::Contains("17 cut classes for 18 tets"));
 }
+
+TEST_CASE("pieces: a tet naming a node outside the points is refused with its id", "[pieces]") {
+  xfem::EnrichedMesh m = column_cut_in_the_middle();
+  m.mesh.tets(5, 2) = static_cast<int>(m.mesh.points.rows());
+  REQUIRE_THROWS_WITH(xfem::find_pieces(m, constrained_at_z(m, 0.0)),
+                      Catch::Contains("tet 5 has node") && Catch::Contains("outside the 16 points"));
+}
+
+TEST_CASE("pieces: a mesh of many cubes is one piece, the same with and without the cut layer", "[pieces]") {
+  // Enough tets for every node to own several faces: the bucketed face sort must pair them all.
+  xfem::EnrichedMesh m;
+  m.mesh = xfem::box_mesh({6, 5, 4}, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 4));
+  m.side.assign(m.mesh.points.rows(), 1);
+  m.cut_class.assign(m.tets(), 0);
+  const auto pieces = xfem::find_pieces(m, std::vector<char>(m.mesh.points.rows(), 0));
+  REQUIRE(pieces.size() == 1);
+  CHECK(pieces[0].tets == 6 * 5 * 4 * 6);
+  CHECK_FALSE(pieces[0].constrained);
+}
