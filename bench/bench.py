@@ -243,10 +243,10 @@ def report(cases, mach, runs, args):
     L.append("Machine: %d cores (`nproc`), %s (/proc/cpuinfo), %.1f GB memory; load average %s at the start "
              "(the machine is shared, single runs vary)." % (mach["nproc"], mach["model"], mach["mem_gb"],
                                                              " ".join(mach["load"])))
-    L.append("Each stage ran %d times (peak RSS from GNU time, `/usr/bin/time -f '%%e %%M'`, wall time around it "
-             "from Python's perf_counter as %%e has only 10 ms resolution); the "
-             "tables give medians. Floors ran alternating with the tools, also %d times (bare_assemble: the "
-             "minimum of its %d in-process repeats)." % (runs, runs, runs))
+    L.append("Each stage ran %d times, %d for the largest beam and the reference (peak RSS from GNU time, "
+             "`/usr/bin/time -f '%%e %%M'`, wall time around it from Python's perf_counter as %%e has only 10 ms "
+             "resolution); the tables give medians. Floors ran alternating with the tools, as often (bare_assemble: "
+             "the minimum of its in-process repeats)." % (runs, args.large_runs))
     L.append("")
     L.append("### Inputs")
     L.append("")
@@ -363,7 +363,7 @@ def report(cases, mach, runs, args):
     L.append("### Commands")
     L.append("")
     L.append("```")
-    L.append("make -f Makefile.examples bench          # = python3 bench/bench.py --build build --runs %d" % runs)
+    L.append("make -f Makefile.examples bench          # = python3 bench/bench.py --build build --runs %d --large-runs %d" % (runs, args.large_runs))
     L.append("# per case, in bench/out/<case>/ (P = pipelines/beam/problem.json; the reference case has no --cut):")
     L.append("xfem-classify -q mesh.vtu --cut cut.vtp -o classified.vtu --summary counts.json")
     L.append("xfem-enrich -q classified.vtu -o enriched.vtu")
@@ -397,7 +397,7 @@ def write_doc(path, block):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--runs", type=int, default=3, help="runs per stage and floor (median)")
+    ap.add_argument("--runs", type=int, default=5, help="runs per stage and floor (median)")
     ap.add_argument("--large-runs", type=int, default=3, help="runs for the largest beam and the reference")
     ap.add_argument("--sizes", nargs=3, default=["0.007", "0.0034", "0.002"],
                     help="target edge lengths H of the three unstructured beams (m)")

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "xfem/element_split.h"
 #include "xfem/enriched_basis.h"
 #include "xfem/error.h"
 #include "xfem/tet_shape.h"
@@ -16,6 +17,16 @@ namespace {
 // A vertex this close to the front (relative to the tet's longest edge) lies on it: the split's
 // front points come from inexact constructions, so exact zero is not expected.
 constexpr double kOnFront = 1e-6;
+
+// A tet part is bisected while the front is nearer to it than kNear times its length, at most
+// kMaxLevels times (a front through an edge's interior would otherwise split it forever). A tet
+// without a vertex on the front (blending elements, pieces of completely cut ones) is split only
+// while the front is nearer than kNearFar times its longest edge, at most kMaxLevelsFar times: its
+// integrand is bounded, and splitting every tet within one size of the front costs 20x the points.
+constexpr double kNear = 1.0;
+constexpr int kMaxLevels = 8;
+constexpr double kNearFar = 0.5;
+constexpr int kMaxLevelsFar = 8;
 
 double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
   const Eigen::Vector3d d = q - p;
@@ -81,42 +92,19 @@ void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& w
 }
 
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                      const Eigen::Vector3d& d, int n, int side, PointRule& out, bool angular) {
+                      const Eigen::Vector3d& d, int n, int side, PointRule& out) {
   std::vector<double> g, gw;
   gauss_legendre_01(n, g, gw);
   // |det(b-a, c-a, d-c)| = 6 V: the volume is the integral of 6 V s (1-s) over the unit cube.
   const double six_v = std::abs((b - a).cross(c - a).dot(d - c));
-  // w at each of the n points of the last direction, with its weight (dw per unit parameter).
-  std::vector<double> ws(g), wweights(gw);
-  const Eigen::Vector3d e = (b - a).normalized();
-  const Eigen::Vector3d pc = (c - a) - (c - a).dot(e) * e, pd = (d - a) - (d - a).dot(e) * e;
-  const double scale = (b - a).norm() + (c - a).norm() + (d - a).norm();
-  if (angular && pc.norm() > 1e-9 * scale && pd.norm() > 1e-9 * scale) {
-    // Polar angle phi around the line ab instead of w: with q(w) = pc + w (pd - pc) in the plane
-    // normal to ab, dw/dphi = |q|^2 / (pc x pd), which cancels the 1/|q| of a 1/r integrand; the
-    // near-singular w-integrand of a wide wedge (cd passing close to the line) becomes smooth.
-    const Eigen::Vector3d e1 = pc.normalized();
-    const Eigen::Vector3d e2 = (pd - pd.dot(e1) * e1).normalized();
-    const Eigen::Vector2d c2(pc.norm(), 0.0), d2(pd.dot(e1), pd.dot(e2));
-    const double cross_cd = c2.x() * d2.y() - c2.y() * d2.x();
-    const double phi_d = std::atan2(d2.y(), d2.x());  // in (0, pi): the wedge's opening
-    for (int k = 0; k < n; ++k) {
-      const Eigen::Vector2d u(std::cos(g[k] * phi_d), std::sin(g[k] * phi_d));
-      const Eigen::Vector2d dc = c2 - d2;
-      const double w = (c2.x() * u.y() - c2.y() * u.x()) / (dc.x() * u.y() - dc.y() * u.x());
-      const Eigen::Vector2d q = c2 + w * (d2 - c2);
-      ws[k] = w;
-      wweights[k] = gw[k] * phi_d * q.squaredNorm() / cross_cd;
-    }
-  }
   for (int i = 0; i < n; ++i) {
     const double sigma = g[i], s = sigma * sigma;
     const double radial = gw[i] * 2.0 * sigma * s * (1.0 - s) * six_v;  // ds = 2 sigma dsigma
     for (int j = 0; j < n; ++j) {
       const Eigen::Vector3d on_ab = a + g[j] * (b - a);
       for (int k = 0; k < n; ++k) {
-        out.x.push_back((1.0 - s) * on_ab + s * (c + ws[k] * (d - c)));
-        out.weights.push_back(radial * gw[j] * wweights[k]);
+        out.x.push_back((1.0 - s) * on_ab + s * (c + g[k] * (d - c)));
+        out.weights.push_back(radial * gw[j] * gw[k]);
         out.side.push_back(side);
       }
     }
@@ -142,14 +130,31 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
   }
 }
 
+namespace {
+
+// append_tet_rule at subdivision depth `level`: a tet whose integrand is nearly singular (the front
+// passes close to, but not through, the part the Gauss points resolve) is bisected at the midpoint
+// of the edge concerned, the halves keeping the vertices on the front, until the front is at least
+// as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
-                     PointRule& out) {
+                     PointRule& out, int level) {
   static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   auto opposite = [](int i, int j, int& k, int& l) {
     k = -1;
     for (int m = 0; m < 4; ++m)
       if (m != i && m != j) (k < 0 ? k : l) = m;
   };
+  // The tet with vertex i replaced by the midpoint of edge (i, j), and with vertex j replaced.
+  auto bisect = [&](int i, int j) {
+    const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
+    std::array<Eigen::Vector3d, 4> q = p;
+    q[i] = mid;
+    append_tet_rule(q, front, n, side, out, level + 1);
+    q = p;
+    q[j] = mid;
+    append_tet_rule(q, front, n, side, out, level + 1);
+  };
+  const bool may_split = level < kMaxLevels;
   int best = 0;
   if (!front.empty()) {
     double longest = 0;
@@ -158,15 +163,31 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     for (int m = 0; m < 4; ++m)
       if (front_distance(p[m], front) <= kOnFront * longest) on[count++] = m;
     if (count == 1) {
-      int k = -1, l = -1, j = on[0] == 0 ? 1 : 0;
+      // Singular at vertex a; nearly singular in the direction of the face opposite it when the
+      // front line passes close to that face: split the face's longest edge.
+      int j = on[0] == 0 ? 1 : 0, k = -1, l = -1;
       opposite(on[0], j, k, l);
+      const int face[3] = {j, k, l};
+      double h = std::numeric_limits<double>::infinity(), edge = 0;
+      int e0 = 0, e1 = 1;
+      for (int x = 0; x < 3; ++x) {
+        const int u = face[x], v = face[(x + 1) % 3];
+        h = std::min(h, front_distance(p[u], p[v], front));
+        if ((p[u] - p[v]).norm() > edge) {
+          edge = (p[u] - p[v]).norm();
+          e0 = u;
+          e1 = v;
+        }
+      }
+      if (may_split && h < kNear * edge) return bisect(e0, e1);
       append_vertex_rule(p[on[0]], p[j], p[k], p[l], n, side, out);
       return;
     }
     if (count >= 2) {
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
-      append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], n, side, out, true);
+      if (may_split && front_distance(p[k], p[l], front) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
+      append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], n, side, out);
       return;
     }
     double nearest = std::numeric_limits<double>::infinity();
@@ -177,38 +198,142 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         best = e;
       }
     }
+    if (level < kMaxLevelsFar && nearest < kNearFar * longest) {
+      for (int e = 0; e < 6; ++e)
+        if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
+    }
   }
   int k = -1, l = -1;
   opposite(kEdges[best][0], kEdges[best][1], k, l);
-  append_edge_rule(p[kEdges[best][0]], p[kEdges[best][1]], p[k], p[l], n, side, out, false);
+  append_edge_rule(p[kEdges[best][0]], p[kEdges[best][1]], p[k], p[l], n, side, out);
 }
+
+}  // namespace
+
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
+                     PointRule& out) {
+  append_tet_rule(p, front, n, side, out, 0);
+}
+
+namespace {
+
+// Where the cut crosses segment [a, b] whose ends lie on opposite sides (side(a) = sa): a few steps
+// onto the plane of the closest cut triangle (exact for a planar cut), bisection by side() where
+// those fail. Returns a point of the closed segment.
+Eigen::Vector3d crossing(const CutSurface& cut, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int sa) {
+  double lo = 0, hi = 1, t = 0.5;
+  for (int it = 0; it < 4; ++it) {
+    const CutSurface::Closest c = cut.closest(a + t * (b - a));
+    const Eigen::Vector3d n = cut.unit_normal(c.triangle);
+    const double den = n.dot(b - a);
+    if (den == 0.0) break;
+    const double next = n.dot(c.point - a) / den;
+    if (!(next >= 0.0 && next <= 1.0)) break;
+    const bool done = std::abs(next - t) < 1e-15;
+    t = next;
+    if (done) return a + t * (b - a);
+  }
+  if (cut.side(a + t * (b - a)) == sa) lo = t; else hi = t;  // fall back: bisect on H
+  for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (cut.side(a + mid * (b - a)) == sa ? lo : hi) = mid;
+  }
+  return a + 0.5 * (lo + hi) * (b - a);
+}
+
+// The prism with triangles (a0, a1, a2) and (b0, b1, b2), a_i b_i its side edges, as 3 tets.
+void add_prism(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+               const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2, int side,
+               CutElementSplits& out) {
+  out.tets.push_back({a0, a1, a2, b0});
+  out.tets.push_back({a1, a2, b0, b1});
+  out.tets.push_back({a2, b0, b1, b2});
+  for (int i = 0; i < 3; ++i) out.side.push_back(side);
+}
+
+// A completely cut tet split at the points where the cut crosses its edges between nodes of
+// opposite sides (3 or 4 of them: the marching-tetrahedra cases), one side per piece. Exact for a
+// cut planar inside the element; a curved one is replaced by the surface through these points.
+void split_completely_cut(const EnrichedMesh& em, int t, CutElementSplits& out) {
+  std::array<Eigen::Vector3d, 4> p;
+  std::vector<int> up, down;
+  for (int c = 0; c < 4; ++c) {
+    const int k = em.mesh.tets(t, c);
+    p[c] = em.mesh.points.row(k).transpose();
+    (em.side[k] > 0 ? up : down).push_back(c);
+  }
+  if (up.empty() || down.empty()) {
+    out.tets.push_back(p);
+    out.side.push_back(up.empty() ? -1 : 1);
+    return;
+  }
+  auto e = [&](int i, int j) { return crossing(*em.cut, p[i], p[j], em.side[em.mesh.tets(t, i)]); };
+  if (up.size() == 2) {
+    const int P0 = up[0], P1 = up[1], Q0 = down[0], Q1 = down[1];
+    const Eigen::Vector3d e00 = e(P0, Q0), e01 = e(P0, Q1), e10 = e(P1, Q0), e11 = e(P1, Q1);
+    add_prism(p[P0], e00, e01, p[P1], e10, e11, 1, out);
+    add_prism(p[Q0], e00, e10, p[Q1], e01, e11, -1, out);
+    return;
+  }
+  // One node L alone on its side: the tet at L and the prism between the cut and the other three.
+  const bool lone_up = up.size() == 1;
+  const int L = lone_up ? up[0] : down[0];
+  const std::vector<int>& rest = lone_up ? down : up;
+  const Eigen::Vector3d e0 = e(L, rest[0]), e1 = e(L, rest[1]), e2 = e(L, rest[2]);
+  out.tets.push_back({p[L], e0, e1, e2});
+  out.side.push_back(lone_up ? 1 : -1);
+  add_prism(e0, e1, e2, p[rest[0]], p[rest[1]], p[rest[2]], lone_up ? -1 : 1, out);
+}
+
+}  // namespace
 
 CutElementSplits split_cut_elements(const EnrichedMesh& em) {
   CutElementSplits out;
   const int tets = em.tets();
   out.index.assign(tets, -1);
   out.first.push_back(0);
-  TetMesh cut_tets;
-  std::vector<int> rows;
+  std::vector<int> partial;
+  bool any = false;
   if (!em.cut_class.empty())
-    for (int t = 0; t < tets; ++t)
-      if (em.cut_class[t] > 0) rows.push_back(t);
-  if (rows.empty()) return out;
-  if (!em.cut) throw Error("conforming integration: " + std::to_string(rows.size()) + " cut elements but no cut surface");
-  cut_tets.points = em.mesh.points;
-  cut_tets.tets.resize(static_cast<Eigen::Index>(rows.size()), 4);
-  for (std::size_t i = 0; i < rows.size(); ++i) cut_tets.tets.row(static_cast<Eigen::Index>(i)) = em.mesh.tets.row(rows[i]);
-  const std::vector<int> all_cut(rows.size(), 1);  // split_mesh splits whatever the cut crosses
-  out.split = split_mesh(cut_tets, em.side, all_cut, em.cut->mesh(), em.front.segments());
-  // split_mesh emits the sub-tets parent after parent.
-  const int sub = static_cast<int>(out.split.tets.rows());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    out.index[rows[i]] = static_cast<int>(i);
-    int end = out.first.back();
-    while (end < sub && out.split.parent[end] == static_cast<int>(i)) ++end;
-    out.first.push_back(end);
+    for (int t = 0; t < tets; ++t) {
+      if (em.cut_class[t] == 1) partial.push_back(t);
+      any = any || em.cut_class[t] > 0;
+    }
+  if (!any) return out;
+  if (!em.cut) throw Error("conforming integration: the mesh has cut elements but no cut surface was given");
+  // Partially cut elements: split_mesh fans them from a point M on the front (element_split.h).
+  SplitMesh split;
+  std::vector<int> partial_first{0};
+  if (!partial.empty()) {
+    TetMesh sub;
+    sub.points = em.mesh.points;
+    sub.tets.resize(static_cast<Eigen::Index>(partial.size()), 4);
+    for (std::size_t i = 0; i < partial.size(); ++i) sub.tets.row(static_cast<Eigen::Index>(i)) = em.mesh.tets.row(partial[i]);
+    split = split_mesh(sub, em.side, std::vector<int>(partial.size(), 1), em.cut->mesh(), em.front.segments());
+    const int n = static_cast<int>(split.tets.rows());
+    for (std::size_t i = 0; i < partial.size(); ++i) {  // split_mesh emits them parent after parent
+      int end = partial_first.back();
+      while (end < n && split.parent[end] == static_cast<int>(i)) ++end;
+      partial_first.push_back(end);
+    }
   }
-  if (out.first.back() != sub) throw Error("conforming integration: split_mesh returned sub-tets out of order");
+  std::size_t next_partial = 0;
+  for (int t = 0; t < tets; ++t) {
+    if (em.cut_class[t] == 0) continue;
+    out.index[t] = static_cast<int>(out.first.size()) - 1;
+    if (em.cut_class[t] == 2) {
+      split_completely_cut(em, t, out);
+    } else {
+      const std::size_t i = next_partial++;
+      for (int s = partial_first[i]; s < partial_first[i + 1]; ++s) {
+        std::array<Eigen::Vector3d, 4> q;
+        for (int c = 0; c < 4; ++c) q[c] = split.points.row(split.tets(s, c)).transpose();
+        out.tets.push_back(q);
+        out.side.push_back(split.tet_side[s]);
+      }
+    }
+    out.first.push_back(static_cast<int>(out.tets.size()));
+  }
   return out;
 }
 
@@ -221,11 +346,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
     append_tet_rule(p, em.front, n, 0, out);
     return;
   }
-  for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
-    std::array<Eigen::Vector3d, 4> p;
-    for (int c = 0; c < 4; ++c) p[c] = splits.split.points.row(splits.split.tets(s, c)).transpose();
-    append_tet_rule(p, em.front, n, splits.split.tet_side[s], out);
-  }
+  for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) append_tet_rule(splits.tets[s], em.front, n, splits.side[s], out);
 }
 
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,

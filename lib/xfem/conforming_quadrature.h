@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "xfem/crack_front.h"
-#include "xfem/element_split.h"
+#include "xfem/cut_surface.h"
 #include "xfem/element_stiffness.h"
 #include "xfem/enriched_mesh.h"
 
@@ -16,9 +16,9 @@ namespace xfem {
 /// (docs/FORMATS.md). Oversampling integrates the Heaviside jump only to O(sub-tet size), gives no
 /// point to thin slivers cut off a tet, and integrates the 1/r singular stiffness of the crack-tip
 /// functions only to ~1e-3 (docs/VERIFICATION.md). This rule
-///   1. splits every cut element along the cut into sub-tets of one side each (element_split.h:
-///      exact for a planar cut with a straight front; sub-tets next to the front have an edge or a
-///      vertex on it), so H and theta are evaluated with the sub-tet's own side;
+///   1. splits every cut element along the cut into sub-tets of one side each (split_cut_elements:
+///      exact for a cut planar inside the element with a straight front; sub-tets next to the front
+///      have an edge or a vertex on it), so H and theta are evaluated with the sub-tet's own side;
 ///   2. integrates every sub-tet (and every uncut enriched tet as one) with a collapsed Gauss
 ///      tensor rule whose collapse sits on the front: on an edge lying on the front an edge-Duffy
 ///      map, on a vertex lying on the front a vertex-Duffy map, each with the radial variable
@@ -46,12 +46,10 @@ void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& w
 /// Edge-Duffy rule of the tet (a, b, c, d) collapsed on edge ab: x(s,t,w) = (1-s)(a + t(b-a)) +
 /// s(c + w(d-c)), Jacobian 6 V s (1-s), s = sigma^2, n Gauss points in each of sigma, t, w
 /// (n^3 points appended to `out` with `side`). Integrands ~ 1/r and r^(-1/2), r the distance to
-/// the line ab, become smooth. Polynomials of degree p are integrated exactly for 2n - 1 >= 4p - 1
-/// (p = 3: n >= 6). With `angular` the last direction runs over the polar angle around the line ab
-/// instead of w (for ab on the front: a wedge whose edge cd passes close to the front line gives a
-/// nearly singular w-integrand; in the angle it is smooth); polynomials are then not exact.
+/// the line ab, become smooth. Polynomials of degree p are integrated exactly for 2n - 1 >= 2p + 5
+/// (p = 3: n >= 6).
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                      const Eigen::Vector3d& d, int n, int side, PointRule& out, bool angular = false);
+                      const Eigen::Vector3d& d, int n, int side, PointRule& out);
 
 /// Vertex-Duffy rule collapsed at a: x = a + u(b-a) + uv(c-b) + uvw(d-c), Jacobian 6 V u^2 v,
 /// u = sigma^2: for integrands singular like 1/r at the vertex (r the distance to a line through a
@@ -61,20 +59,32 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 
 /// The rule for one tet p[0..3] near `front` (may be empty): the vertices within 1e-6 of the tet's
 /// longest edge of the front decide it: two -> edge rule on them, one -> vertex rule at it, none ->
-/// edge rule on the edge closest to the front (any edge for an empty front), so points cluster
-/// towards it. Appends n^3 points with `side`.
+/// edge rule on the edge closest to the front (any edge for an empty front). Where the front passes
+/// closer than its length to the part of the tet the rule resolves (edge cd of an edge rule, the
+/// face opposite a vertex rule's vertex, the whole tet otherwise), the integrand is nearly singular
+/// and Gauss rules converge slowly: the tet is bisected at that part's longest edge, recursively
+/// (front within one length of a part with a vertex on the front, within half the longest edge of
+/// a tet without one; at most 8 levels), and each half gets its own rule. Appends n^3 points per
+/// final tet with `side`.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out);
 
-/// The cut elements of a mesh split along the cut, once for all elements (split_mesh of
-/// element_split.h on the tets with cut_class > 0).
+/// The cut elements of a mesh split along the cut into pieces of one side each, once for all
+/// elements. Completely cut elements (cut_class 2) are split at the points where the cut crosses
+/// their edges between nodes of opposite sides (array `side`): the marching-tetrahedra pieces, a
+/// tet and a prism or two prisms, 4 or 6 tets, exact for a cut that is planar inside the element,
+/// however thin a piece. Partially cut elements (cut_class 1) are split by split_mesh
+/// (element_split.h), which fans them from a point M on the front: sub-tets then have an edge or a
+/// vertex on the front, side 0 ahead of it (M is moved off the front when it would lie within
+/// 1e-3 of a face in barycentric terms, and the split is then no longer exact there).
 struct CutElementSplits {
-  SplitMesh split;            ///< sub-tets of the cut elements only; points as split.points
-  std::vector<int> index;     ///< per mesh tet: its row in `first`, -1 for uncut tets
-  std::vector<int> first;     ///< CSR: sub-tets first[i] .. first[i+1]-1 of split.tets
+  std::vector<std::array<Eigen::Vector3d, 4>> tets;  ///< corners (m) of every piece
+  std::vector<int> side;   ///< per piece: +1 / -1, 0 ahead of the front
+  std::vector<int> index;  ///< per mesh tet: its row in `first`, -1 for uncut tets
+  std::vector<int> first;  ///< CSR: pieces first[i] .. first[i+1]-1
 };
-/// Throws xfem::Error (from split_mesh) when em's sides or classes are inconsistent; an em with
-/// cut elements but no cut surface is an error naming it.
+/// Throws xfem::Error (from split_mesh) when em's sides are not +-1, and when em has cut elements
+/// but no cut surface.
 CutElementSplits split_cut_elements(const EnrichedMesh& em);
 
 /// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side, 0 ahead
