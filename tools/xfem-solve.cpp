@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
       "Writes the full solution (3N values: original, sign and branch DOFs; constrained DOFs at their values).",
       "xfem-solve out/system -o out/u.mtx --report out/solve.json\n"
       "  mpirun -np 2 xfem-solve out/system -o out/u.mtx --backend petsc --rtol 1e-8");
-  std::string dir, output, report_path, backend = "cholmod", ordering = "metis", near_null = "rigid";
+  std::string dir, output, report_path, backend = "cholmod", ordering = "metis", near_null = "rigid",
+              enriched_block = "auto";
   double rtol = 1e-10, drop_tol = 0;
   int max_iterations = 10000;
   auto& app = tool->app;
@@ -59,6 +60,12 @@ int main(int argc, char** argv) {
                                                  "DOFs, needs coordinates.mtx; default), rigid-enriched (also the "
                                                  "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
       ->check(CLI::IsMember({"rigid", "rigid-enriched", "none"}));
+  app.add_option("--enriched-block", enriched_block,
+                 "PETSc: preconditioner for the enriched DOFs: direct (PCFIELDSPLIT: GAMG on the original DOFs, "
+                 "a Cholesky factorization of the enriched block, symmetric multiplicative), gamg (one GAMG on the "
+                 "whole K) or auto (default: direct when the system has enriched DOFs, else gamg); "
+                 "docs/PERFORMANCE.md")
+      ->check(CLI::IsMember({"auto", "direct", "gamg"}));
   app.add_option("--drop-tiny-enrichment", drop_tol,
                  "fix to 0 the enriched DOFs whose diagonal of K is below TOL times the mean diagonal of the original "
                  "DOFs: sign/branch DOFs with a tiny but non-zero support on one side of the cut (TOL ~ the volume "
@@ -139,11 +146,13 @@ int main(int argc, char** argv) {
       report["setup_seconds"] = c.analyze_seconds + c.factor_seconds;
       report["solve_seconds"] = c.solve_seconds;
     } else {
-      const xfem::PetscResult p = xfem::petsc_solve(s, {rtol, max_iterations, near_null});
+      const std::string block = enriched_block != "auto" ? enriched_block : s.n > s.np ? "direct" : "gamg";
+      const xfem::PetscResult p = xfem::petsc_solve(s, {rtol, max_iterations, near_null, block});
       u = p.u;
-      info("PETSc CG + GAMG on " + std::to_string(p.processes) + " process(es), near-null space " + near_null + ": " +
-           std::to_string(p.iterations) + " iterations (" + p.converged_reason + "); setup " +
+      info("PETSc CG + " + p.preconditioner + " on " + std::to_string(p.processes) + " process(es), near-null space " +
+           near_null + ": " + std::to_string(p.iterations) + " iterations (" + p.converged_reason + "); setup " +
            g(p.setup_seconds) + " s, solve " + g(p.solve_seconds) + " s");
+      report["preconditioner"] = p.preconditioner;
       report["processes"] = p.processes;
       report["near_null_space"] = near_null;
       report["iterations"] = p.iterations;

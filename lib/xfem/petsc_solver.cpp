@@ -148,37 +148,98 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   check(MatAssemblyEnd(o.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   check(MatSetOption(o.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
 
-  // 3. Near-null space: the rigid-body modes, the coarse space GAMG must represent.
+  // 3. Near-null space: the rigid-body modes, the coarse space GAMG must represent. With the
+  //    field split, GAMG sees only the original block: the modes restricted to it (still
+  //    orthonormal, their enriched rows being 0), composed with its index set, where
+  //    PCFIELDSPLIT looks for them ("nearnullspace").
+  if (options.enriched_block != "gamg" && options.enriched_block != "direct")
+    throw Error("unknown enriched-block treatment '" + options.enriched_block + "' (gamg or direct)");
+  const bool split = options.enriched_block == "direct" && s.n > s.np;
+  const long orig_end = 3 * s.np;  // the original DOFs are 0 .. 3 NP-1 (whole 3-vectors)
+  const long o0 = std::min(r0, orig_end), o1 = std::min(r1, orig_end);  // this rank's original rows
+  IS is_orig = nullptr, is_enriched = nullptr;
+  struct IsGuard {
+    IS* a; IS* b;
+    ~IsGuard() { if (*a) ISDestroy(a); if (*b) ISDestroy(b); }
+  } is_guard{&is_orig, &is_enriched};
+  if (split) {
+    check(ISCreateStride(comm, o1 - o0, o0, 1, &is_orig), "ISCreateStride (original DOFs)");
+    check(ISCreateStride(comm, (r1 - r0) - (o1 - o0), std::max(r0, orig_end), 1, &is_enriched),
+          "ISCreateStride (enriched DOFs)");
+    check(ISSetBlockSize(is_orig, 3), "ISSetBlockSize");
+    check(ISSetBlockSize(is_enriched, 3), "ISSetBlockSize");
+  }
   if (options.near_null_space == "rigid" || options.near_null_space == "rigid-enriched") {
     if (s.coordinates.size() == 0)
       throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.mtx in the "
                   "system directory); use --near-null-space none to go without");
-    const Eigen::MatrixXd R = rigid_modes(s, options.near_null_space == "rigid-enriched");
+    const Eigen::MatrixXd R = rigid_modes(s, options.near_null_space == "rigid-enriched" && !split);
     o.modes.resize(6, nullptr);
     for (int m = 0; m < 6; ++m) {
-      check(VecDuplicate(o.x, &o.modes[m]), "VecDuplicate");
+      if (split) {
+        check(VecCreateMPI(comm, o1 - o0, orig_end, &o.modes[m]), "VecCreateMPI");
+        check(VecSetBlockSize(o.modes[m], 3), "VecSetBlockSize");
+      } else {
+        check(VecDuplicate(o.x, &o.modes[m]), "VecDuplicate");
+      }
       PetscScalar* a = nullptr;
       check(VecGetArray(o.modes[m], &a), "VecGetArray");
-      for (long row = r0; row < r1; ++row) a[row - r0] = R(row, m);
+      const long end = split ? o1 : r1;
+      for (long row = r0; row < end; ++row) a[row - r0] = R(row, m);
       check(VecRestoreArray(o.modes[m], &a), "VecRestoreArray");
     }
     check(MatNullSpaceCreate(comm, PETSC_FALSE, 6, o.modes.data(), &o.near_null), "MatNullSpaceCreate");
-    check(MatSetNearNullSpace(o.A, o.near_null), "MatSetNearNullSpace");
+    if (split)
+      check(PetscObjectCompose(reinterpret_cast<PetscObject>(is_orig), "nearnullspace",
+                               reinterpret_cast<PetscObject>(o.near_null)), "PetscObjectCompose");
+    else
+      check(MatSetNearNullSpace(o.A, o.near_null), "MatSetNearNullSpace");
   } else if (options.near_null_space != "none") {
     throw Error("unknown near-null space '" + options.near_null_space + "' (rigid, rigid-enriched or none)");
   }
 
-  // 4. CG + GAMG, the tolerance on the true (unpreconditioned) residual.
+  // 4. CG + GAMG (or the field split), the tolerance on the true (unpreconditioned) residual.
   check(KSPCreate(comm, &o.ksp), "KSPCreate");
   check(KSPSetOperators(o.ksp, o.A, o.A), "KSPSetOperators");
   check(KSPSetType(o.ksp, KSPCG), "KSPSetType");
   PC pc = nullptr;
   check(KSPGetPC(o.ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCGAMG), "PCSetType");
+  if (split) {
+    // Sub-solver choices as option defaults, so that PETSC_OPTIONS can still override them.
+    const auto default_option = [](const char* name, const char* value) {
+      PetscBool set = PETSC_FALSE;
+      check(PetscOptionsHasName(nullptr, nullptr, name, &set), "PetscOptionsHasName");
+      if (!set) check(PetscOptionsSetValue(nullptr, name, value), "PetscOptionsSetValue");
+    };
+    default_option("-fieldsplit_original_ksp_type", "preonly");
+    default_option("-fieldsplit_original_pc_type", "gamg");
+    default_option("-fieldsplit_enriched_ksp_type", "preonly");
+    // The enriched block is small (a few % of the DOFs) but badly conditioned: factor it whole,
+    // on every rank (PCREDUNDANT; on one rank that is a plain factorization).
+    default_option("-fieldsplit_enriched_pc_type", "redundant");
+    default_option("-fieldsplit_enriched_redundant_pc_type", "cholesky");
+    default_option("-fieldsplit_enriched_redundant_pc_factor_mat_ordering_type", "nd");
+    check(PCSetType(pc, PCFIELDSPLIT), "PCSetType");
+    check(PCFieldSplitSetIS(pc, "original", is_orig), "PCFieldSplitSetIS (original DOFs)");
+    check(PCFieldSplitSetIS(pc, "enriched", is_enriched), "PCFieldSplitSetIS (enriched DOFs)");
+    check(PCFieldSplitSetType(pc, PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE), "PCFieldSplitSetType");
+    r.preconditioner = "fieldsplit (GAMG | Cholesky)";
+  } else {
+    check(PCSetType(pc, PCGAMG), "PCSetType");
+    r.preconditioner = "GAMG";
+  }
   check(KSPSetNormType(o.ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   check(KSPSetTolerances(o.ksp, options.rtol, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
   check(KSPSetFromOptions(o.ksp), "KSPSetFromOptions");
-  check(KSPSetUp(o.ksp), "KSPSetUp (GAMG setup)");
+  check(KSPSetUp(o.ksp), split ? "KSPSetUp (field split)" : "KSPSetUp (GAMG setup)");
+  if (split) {  // the splits' own setup (GAMG hierarchy, factorization) belongs to the setup time too
+    PetscInt count = 0;
+    KSP* sub = nullptr;
+    check(PCFieldSplitGetSubKSP(pc, &count, &sub), "PCFieldSplitGetSubKSP");
+    for (PetscInt k = 0; k < count; ++k)
+      check(KSPSetUp(sub[k]), k == 0 ? "KSPSetUp (original block: GAMG setup)" : "KSPSetUp (enriched block: factorization)");
+    PetscFree(sub);
+  }
   r.setup_seconds = seconds_since(t_setup);
 
   const auto t_solve = std::chrono::steady_clock::now();
@@ -191,7 +252,7 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   r.iterations = iterations;
   r.converged_reason = KSPConvergedReasons[reason];
   if (reason < 0)
-    throw Error("PETSc CG + GAMG did not converge (" + r.converged_reason + " after " + std::to_string(iterations) +
+    throw Error("PETSc CG + " + r.preconditioner + " did not converge (" + r.converged_reason + " after " + std::to_string(iterations) +
                 " iterations): the system may be singular (a loose piece, tiny enriched support) or need more "
                 "iterations (--max-iterations)");
 
