@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
                       "of the cut (a thin sliver; more --points or --refine help); xfem-solve fixes them to 0");
     for (std::size_t i = 0; i < system.pieces.size(); ++i)
       if (!system.pieces[i].constrained)
-        xfem::cli::warn("piece " + std::to_string(i) + " (" + std::to_string(system.pieces[i].tets) +
+        xfem::cli::warn("piece " + std::to_string(i + 1) + " (" + std::to_string(system.pieces[i].tets) +
                         " tets) has no Dirichlet condition: it can move rigidly, K is singular");
   });
 }

@@ -152,6 +152,7 @@ int main(int argc, char** argv) {
       info("PETSc CG + " + p.preconditioner + " on " + std::to_string(p.processes) + " process(es), near-null space " +
            near_null + ": " + std::to_string(p.iterations) + " iterations (" + p.converged_reason + "); setup " +
            g(p.setup_seconds) + " s, solve " + g(p.solve_seconds) + " s");
+      report["enriched_block"] = block;
       report["preconditioner"] = p.preconditioner;
       report["processes"] = p.processes;
       report["near_null_space"] = near_null;

@@ -10,6 +10,8 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <unordered_map>
 
@@ -35,16 +37,27 @@ void parallel_for(long n, const std::function<void(long, long)>& body,
   const long chunk = 4096;
   const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
   std::atomic<long> next{0};
+  // An exception in a worker (bad_alloc, a CGAL precondition) would call std::terminate: keep the
+  // first one, stop handing out work, and rethrow it on the calling thread after the join.
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
   auto work = [&](bool report) {
-    for (long b; (b = next.fetch_add(chunk)) < n;) {
-      body(b, std::min(n, b + chunk));
-      if (report && progress) progress(static_cast<double>(std::min(n, b + chunk)) / n);
+    try {
+      for (long b; (b = next.fetch_add(chunk)) < n;) {
+        body(b, std::min(n, b + chunk));
+        if (report && progress) progress(static_cast<double>(std::min(n, b + chunk)) / n);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = n;
     }
   };
   std::vector<std::thread> pool;
   for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work, false);
   work(true);
   for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
 }
 
 Kernel::Point_3 to_cgal(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }

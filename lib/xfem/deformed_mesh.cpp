@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "xfem/element_stiffness.h"
 #include "xfem/enriched_basis.h"
 #include "xfem/error.h"
 
@@ -31,7 +32,8 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
                            double E, double nu, const std::function<void(double)>& progress) {
   if (!(E > 0)) throw Error("deformed_body: Young's modulus E must be positive, got " + std::to_string(E));
   if (!(nu > -1 && nu < 0.5)) throw Error("deformed_body: Poisson's ratio nu must be in (-1, 0.5), got " + std::to_string(nu));
-  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const Lame lm = lame(E, nu);
+  const double lambda = lm.lambda, mu = lm.mu;
   const Eigen::Index np = split.points.rows(), nt = split.tets.rows();
 
   DeformedBody out;

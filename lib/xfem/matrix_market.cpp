@@ -7,6 +7,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -159,10 +160,20 @@ void write_symmetric_matrix(const SparseMatrix& K, const std::string& path) {
   std::mutex mutex;
   std::condition_variable finished;
   std::atomic<int> next{0};
+  std::exception_ptr failure;  // a worker's bad_alloc, rethrown by the writing thread
   const auto format = [&] {
     for (int b; (b = next++) < blocks;) {
       const auto capacity = static_cast<std::size_t>(K.outerIndexPtr()[first[b + 1]] - K.outerIndexPtr()[first[b]]) * line_max;
-      std::unique_ptr<char[]> out(new char[std::max<std::size_t>(capacity, 1)]);
+      std::unique_ptr<char[]> out;
+      try {
+        out.reset(new char[std::max<std::size_t>(capacity, 1)]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        done[b] = 1;
+        finished.notify_all();
+        continue;
+      }
       char* p = out.get();
       char* const stop = p + capacity;
       for (int j = first[b]; j < first[b + 1]; ++j)
@@ -202,6 +213,7 @@ void write_symmetric_matrix(const SparseMatrix& K, const std::string& path) {
       {
         std::unique_lock<std::mutex> lock(mutex);
         finished.wait(lock, [&] { return done[b] != 0; });
+        if (failure) std::rethrow_exception(failure);
         block = std::move(text[b]);
       }
       sink(block.get(), length[b]);

@@ -35,6 +35,7 @@ MeshOrdering spatial_ordering(const TetMesh& mesh);
 /// `mesh` renumbered by `spatial_ordering`: the same points and tets (each tet keeps its
 /// local vertex order, so its orientation), point and cell arrays permuted with them.
 /// Field arrays are copied unchanged (they may hold ids: only use on meshes without such).
+/// Throws also when a point or cell array does not have one tuple per point or tet (naming it).
 TetMesh spatially_ordered(const TetMesh& mesh);
 
 }  // namespace xfem

@@ -237,7 +237,8 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
     KSP* sub = nullptr;
     check(PCFieldSplitGetSubKSP(pc, &count, &sub), "PCFieldSplitGetSubKSP");
     for (PetscInt k = 0; k < count; ++k)
-      check(KSPSetUp(sub[k]), k == 0 ? "KSPSetUp (original block: GAMG setup)" : "KSPSetUp (enriched block: factorization)");
+      check(KSPSetUp(sub[k]),
+            k == 0 ? "KSPSetUp (original block: GAMG setup)" : "KSPSetUp (enriched block: factorization)");
     PetscFree(sub);
   }
   r.setup_seconds = seconds_since(t_setup);
@@ -252,7 +253,8 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   r.iterations = iterations;
   r.converged_reason = KSPConvergedReasons[reason];
   if (reason < 0)
-    throw Error("PETSc CG + " + r.preconditioner + " did not converge (" + r.converged_reason + " after " + std::to_string(iterations) +
+    throw Error("PETSc CG + " + r.preconditioner + " did not converge (" + r.converged_reason + " after " +
+                std::to_string(iterations) +
                 " iterations): the system may be singular (a loose piece, tiny enriched support) or need more "
                 "iterations (--max-iterations)");
 

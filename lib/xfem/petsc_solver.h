@@ -29,7 +29,9 @@ struct PetscSolveOptions {
   double rtol = 1e-10;        ///< stop when ||b - A x|| <= rtol ||b|| (unpreconditioned norm)
   int max_iterations = 10000;
   /// Near-null space for GAMG: "rigid" = the 6 rigid-body modes on the original DOFs (needs
-  /// coordinates; enriched DOFs 0 in every mode), "none" = GAMG's default (constants per component).
+  /// coordinates; enriched DOFs 0 in every mode), "rigid-enriched" = also the 3 translations on every
+  /// enriched 3-vector (as "rigid" with enriched_block "direct", where GAMG sees only the original
+  /// DOFs), "none" = GAMG's default (constants per component).
   std::string near_null_space = "rigid";
   /// How the preconditioner treats the enriched DOFs (3 NP .. 3N-1; docs/PERFORMANCE.md, "Solve:
   /// PETSc GAMG on cut systems"): "gamg" = one GAMG on the whole matrix; "direct" =
@@ -37,7 +39,7 @@ struct PetscSolveOptions {
   /// preconditioner) over two splits: "original" (scalar DOFs 0 .. 3 NP-1, fixed ones included as
   /// their diagonal rows) with one GAMG V-cycle and the near-null space above, "enriched" with a
   /// sparse Cholesky factorization, redundant on every rank (PCREDUNDANT). A system without enriched
-  /// DOFs always gets "gamg". PETSc options in PETSC_OPTIONS (prefixes -fieldsplit_original_,
+  /// DOFs always gets "gamg". Throws xfem::Error on another value. PETSc options in PETSC_OPTIONS (prefixes -fieldsplit_original_,
   /// -fieldsplit_enriched_, -pc_fieldsplit_type) override these choices.
   std::string enriched_block = "gamg";
 };

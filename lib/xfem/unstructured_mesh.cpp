@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "xfem/error.h"
+#include "xfem/mesh_ordering.h"
 #include "xfem/vtk_io.h"
 
 namespace xfem {
@@ -42,8 +43,10 @@ void check_size(double size) {
     throw Error("mesh size must be positive and finite (got " + std::to_string(size) + ")");
 }
 
-// Tets of the complex (cells in the domain) and the vertices they use, numbered in order of
-// first use, then validated (positive orientation, no zero volumes).
+// Tets of the complex (cells in the domain) and the vertices they use, validated (positive
+// orientation, no zero volumes), then renumbered along a Hilbert curve: the complex lists them
+// in no spatial order, which made every later stage miss the cache (docs/PERFORMANCE.md,
+// "Mesh ordering").
 template <class C3t3>
 TetMesh extract(const C3t3& c3t3, const std::string& name) {
   using Vertex = typename C3t3::Vertex_handle;
@@ -71,7 +74,7 @@ TetMesh extract(const C3t3& c3t3, const std::string& name) {
   for (std::size_t i = 0; i < tets.size(); ++i) mesh.tets.row(i) = tets[i].transpose();
   std::vector<std::string> warnings;
   validate_tet_mesh(mesh, name, &warnings);
-  return mesh;
+  return spatially_ordered(mesh);
 }
 
 // Surface_mesh of a validated triangle mesh; throws when it is not closed or not manifold.

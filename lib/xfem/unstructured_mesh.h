@@ -16,8 +16,9 @@ namespace xfem {
 /// >= 25 degrees and tets a radius-edge ratio <= 3, then slivers are exuded (no perturbation).
 /// Curved surfaces are followed to within 0.05 H.
 ///
-/// The result keeps only the tets of the domain and the vertices they use, numbered in order
-/// of first use, validated and positively oriented (validate_tet_mesh), without arrays.
+/// The result keeps only the tets of the domain and the vertices they use, validated and
+/// positively oriented (validate_tet_mesh), without arrays, numbered in space order
+/// (spatially_ordered, mesh_ordering.h: points and tets along a Hilbert curve).
 /// All throw xfem::Error when `size` is not positive or finite, or the mesh comes out empty.
 
 /// The box [lo, hi] with its 8 corners and 12 edges kept sharp (they are protected features:

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "xfem/error.h"
+#include "xfem/mesh_ordering.h"
 #include "xfem/organ_shape.h"
 #include "xfem/vtk_io.h"
 
@@ -91,6 +92,20 @@ TEST_CASE("unstructured_mesh: the same arguments give the same mesh, and it read
   std::remove(path.c_str());
   CHECK(r.points == a.points);
   CHECK(r.tets == a.tets);
+}
+
+TEST_CASE("unstructured_mesh: points and tets come numbered along the space-filling curve", "[unstructured_mesh]") {
+  const xfem::TetMesh m = xfem::unstructured_box_mesh({0, 0, 0}, {0.03, 0.06, 0.2}, 0.01);
+  const xfem::MeshOrdering o = xfem::spatial_ordering(m);  // identity when already in order
+  std::vector<int> identity_p(m.points.rows()), identity_t(m.tets.rows());
+  for (std::size_t i = 0; i < identity_p.size(); ++i) identity_p[i] = static_cast<int>(i);
+  for (std::size_t i = 0; i < identity_t.size(); ++i) identity_t[i] = static_cast<int>(i);
+  CHECK(o.point_order == identity_p);
+  CHECK(o.tet_order == identity_t);
+  const xfem::TetMesh organ = xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, 0.015);
+  const xfem::TetMesh again = xfem::spatially_ordered(organ);
+  CHECK(again.points == organ.points);
+  CHECK(again.tets == organ.tets);
 }
 
 TEST_CASE("unstructured_mesh: a finer size gives more tets", "[unstructured_mesh]") {
