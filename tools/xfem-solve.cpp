@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
            xfem::describe_dof(s, unsupported.front()) + " (its mesh point: the one with " + enriched_point_key(s, vectors.front()) +
            " in enriched.vtu)");
     }
-    const auto tiny = xfem::tiny_enriched_dofs(s, std::max(kTinyWarn, drop_tol));
+    const auto tiny = xfem::tiny_enriched_dofs(s, drop_tol > 0 ? drop_tol : kTinyWarn);  // drop what was asked, warn below 1e-8
     if (drop_tol > 0) {
       xfem::fix_to_zero(s, tiny);
       info("dropped " + std::to_string(tiny.size()) + " enriched DOFs (diagonal < " + g(drop_tol) +

@@ -41,7 +41,8 @@ DataArrays permuted(const DataArrays& arrays, const std::vector<int>& order, con
 
 std::uint64_t hilbert_index(std::array<std::uint32_t, 3> x, int bits) {
   if (bits < 1 || bits > grid_bits)
-    throw Error("hilbert_index: bits must be in 1.." + std::to_string(grid_bits) + " (got " + std::to_string(bits) + ")");
+    throw Error("hilbert_index: bits must be in 1.." + std::to_string(grid_bits) + " (got " + std::to_string(bits) +
+                ")");
   for (int i = 0; i < 3; ++i)
     if (x[i] >> bits)
       throw Error("hilbert_index: coordinate " + std::to_string(x[i]) + " does not fit in " + std::to_string(bits) +
