@@ -362,19 +362,7 @@ void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule&
     for (int c = 0; c < n; ++c)
       for (int a = 0; a < 3; ++a) G(p, 3 * c + a) = s * b.dN(c, a);
   }
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  S.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
-  S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
-  k.resize(3 * n, 3 * n);
-  const double mu = material.mu, la = material.lambda;
-  for (int a = 0; a < n; ++a)
-    for (int c = 0; c < n; ++c) {
-      const double dot = S(3 * a, 3 * c) + S(3 * a + 1, 3 * c + 1) + S(3 * a + 2, 3 * c + 2);
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i)
-          k(3 * a + j, 3 * c + i) =
-              mu * S(3 * a + i, 3 * c + j) + la * S(3 * a + j, 3 * c + i) + (i == j ? mu * dot : 0.0);
-    }
+  stiffness_from_gradients(G, material, k);
 }
 
 }  // namespace xfem

@@ -57,6 +57,11 @@ void element_stiffness(const EnrichedMesh& em, int t, const Quadrature& rule, co
     for (int c = 0; c < n; ++c)
       for (int a = 0; a < 3; ++a) G(p, 3 * c + a) = s * b.dN(c, a);
   }
+  stiffness_from_gradients(G, material, k);
+}
+
+void stiffness_from_gradients(const Eigen::MatrixXd& G, const Lame& material, Eigen::MatrixXd& k) {
+  const int n = static_cast<int>(G.cols() / 3);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   S.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
   S.triangularView<Eigen::StrictlyUpper>() = S.transpose();

@@ -32,4 +32,10 @@ Eigen::Matrix<double, 12, 12> tet_stiffness(const TetShape& shape, const Lame& m
 void element_stiffness(const EnrichedMesh& em, int t, const Quadrature& rule, const Lame& material,
                        Eigen::MatrixXd& k);
 
+/// Formula (5) from sampled gradients: G is q x 3n, row p holding sqrt(w_p) dPhi_c/dx_a at
+/// column 3c + a for integration point p with weight w_p (volume included). Then
+/// S = G^T G = integral of dPhi_n/dx_a dPhi_m/dx_b, and k (3n x 3n) rearranges S.
+/// Shared by every quadrature rule (oversampling, conforming_quadrature.h).
+void stiffness_from_gradients(const Eigen::MatrixXd& G, const Lame& material, Eigen::MatrixXd& k);
+
 }  // namespace xfem
