@@ -10,67 +10,15 @@
 
 #include "xfem/box_mesh.h"
 #include "xfem/error.h"
+#include "enriched_test_meshes.h"
 
 namespace {
 
-// An enriched mesh without enrichment: C = the tet's 4 points.
-xfem::EnrichedMesh plain(const xfem::TetMesh& mesh) {
-  xfem::EnrichedMesh em;
-  em.mesh = mesh;
-  const long np = mesh.points.rows();
-  em.np = em.n = np;
-  em.side.assign(np, 1);
-  em.cut_class.assign(mesh.tets.rows(), 0);
-  for (int t = 0; t < mesh.tets.rows(); ++t) {
-    em.offsets.push_back(4L * t);
-    for (int c = 0; c < 4; ++c) {
-      em.dofs.push_back(mesh.tets(t, c));
-      em.local.push_back(c);
-    }
-  }
-  em.offsets.push_back(4L * mesh.tets.rows());
-  return em;
-}
+using xfem_test::plain;
 
 // The unit box of 1 x 1 x 2 cubes completely cut by the plane z = 0.3 (normal +z) reaching out
 // of the box: the 6 tets of the lower cube are completely cut, its 8 nodes sign enriched.
-xfem::EnrichedMesh cut_box() {
-  xfem::EnrichedMesh em = plain(xfem::box_mesh({1, 1, 2}, {0, 0, 0}, {1, 1, 1}));
-  const int np = static_cast<int>(em.np);
-  std::vector<long> sign(np, -1);
-  for (int k = 0; k < np; ++k) {
-    em.side[k] = em.mesh.points(k, 2) > 0.3 ? 1 : -1;
-    if (em.mesh.points(k, 2) < 0.75) sign[k] = em.np + em.ns++;
-  }
-  em.n = em.np + em.ns;
-  std::vector<long> offsets{0}, dofs;
-  std::vector<int> local;
-  for (int t = 0; t < em.tets(); ++t) {
-    bool cut = true;
-    for (int c = 0; c < 4; ++c) cut = cut && sign[em.mesh.tets(t, c)] >= 0;
-    em.cut_class[t] = cut ? 2 : 0;
-    for (int c = 0; c < 4; ++c) {
-      dofs.push_back(em.mesh.tets(t, c));
-      local.push_back(c);
-    }
-    if (cut)
-      for (int c = 0; c < 4; ++c) {
-        dofs.push_back(sign[em.mesh.tets(t, c)]);
-        local.push_back(c);
-      }
-    offsets.push_back(static_cast<long>(dofs.size()));
-  }
-  em.offsets = offsets;
-  em.dofs = dofs;
-  em.local = local;
-  xfem::TriangleMesh cut;
-  cut.points.resize(4, 3);
-  cut.points << -1, -1, 0.3, 2, -1, 0.3, 2, 2, 0.3, -1, 2, 0.3;
-  cut.triangles.resize(2, 3);
-  cut.triangles << 0, 1, 2, 0, 2, 3;
-  em.cut = std::make_shared<xfem::CutSurface>(cut);
-  return em;
-}
+xfem::EnrichedMesh cut_box() { return xfem_test::cut_box(0.3); }
 
 Eigen::MatrixXd dense_full(const xfem::SparseMatrix& lower) {
   const Eigen::MatrixXd L = Eigen::MatrixXd(lower);

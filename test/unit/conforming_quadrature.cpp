@@ -9,6 +9,7 @@
 #include "xfem/box_mesh.h"
 #include "xfem/error.h"
 #include "xfem/problem.h"
+#include "enriched_test_meshes.h"
 
 namespace {
 
@@ -27,68 +28,9 @@ double barycentric_moment(double volume, int a, int b, int c, int d) {
   return 6 * volume * f(a) * f(b) * f(c) * f(d) / f(a + b + c + d + 3);
 }
 
-// An enriched mesh without enrichment: C = the tet's 4 points (as test/unit/assembly.cpp).
-xfem::EnrichedMesh plain(const xfem::TetMesh& mesh) {
-  xfem::EnrichedMesh em;
-  em.mesh = mesh;
-  const long np = mesh.points.rows();
-  em.np = em.n = np;
-  em.side.assign(np, 1);
-  em.cut_class.assign(mesh.tets.rows(), 0);
-  for (int t = 0; t < mesh.tets.rows(); ++t) {
-    em.offsets.push_back(4L * t);
-    for (int c = 0; c < 4; ++c) {
-      em.dofs.push_back(mesh.tets(t, c));
-      em.local.push_back(c);
-    }
-  }
-  em.offsets.push_back(4L * mesh.tets.rows());
-  return em;
-}
-
-std::shared_ptr<xfem::CutSurface> plane_cut(double z) {
-  xfem::TriangleMesh cut;
-  cut.points.resize(4, 3);
-  cut.points << -1, -1, z, 2, -1, z, 2, 2, z, -1, 2, z;
-  cut.triangles.resize(2, 3);
-  cut.triangles << 0, 1, 2, 0, 2, 3;
-  return std::make_shared<xfem::CutSurface>(cut);
-}
-
-// The box [0,1]^2 x [0,1] of 1 x 1 x 2 cubes, cut completely by the plane z = `cut_z` (normal +z)
-// inside the lower cube: its 6 tets completely cut and its 8 nodes sign enriched.
-xfem::EnrichedMesh cut_box(double cut_z) {
-  xfem::EnrichedMesh em = plain(xfem::box_mesh({1, 1, 2}, {0, 0, 0}, {1, 1, 1}));
-  const int np = static_cast<int>(em.np);
-  std::vector<long> sign(np, -1);
-  for (int k = 0; k < np; ++k) {
-    em.side[k] = em.mesh.points(k, 2) > cut_z ? 1 : -1;
-    if (em.mesh.points(k, 2) < 0.75) sign[k] = em.np + em.ns++;
-  }
-  em.n = em.np + em.ns;
-  std::vector<long> offsets{0}, dofs;
-  std::vector<int> local;
-  for (int t = 0; t < em.tets(); ++t) {
-    bool cut = true;
-    for (int c = 0; c < 4; ++c) cut = cut && sign[em.mesh.tets(t, c)] >= 0;
-    em.cut_class[t] = cut ? 2 : 0;
-    for (int c = 0; c < 4; ++c) {
-      dofs.push_back(em.mesh.tets(t, c));
-      local.push_back(c);
-    }
-    if (cut)
-      for (int c = 0; c < 4; ++c) {
-        dofs.push_back(sign[em.mesh.tets(t, c)]);
-        local.push_back(c);
-      }
-    offsets.push_back(static_cast<long>(dofs.size()));
-  }
-  em.offsets = offsets;
-  em.dofs = dofs;
-  em.local = local;
-  em.cut = plane_cut(cut_z);
-  return em;
-}
+using xfem_test::cut_box;
+using xfem_test::plain;
+using xfem_test::plane_cut;
 
 // One cube [0,1]^3 (6 tets), every node branch enriched, the front the line x = -0.2, z = 0.5
 // (parallel to y) outside the box: no cut element, every element integrates the ACTFs.
