@@ -9,33 +9,11 @@
 
 #include "xfem/error.h"
 #include "xfem/vtk_io.h"
+#include "mesh_checks.h"
 
 namespace {
 
-// Faces (sorted point ids) -> number of tets using them.
-std::map<std::array<int, 3>, int> face_counts(const xfem::TetMesh& m) {
-  std::map<std::array<int, 3>, int> faces;
-  for (int t = 0; t < m.tets.rows(); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f;
-      int n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != skip) f[n++] = m.tets(t, k);
-      std::sort(f.begin(), f.end());
-      ++faces[f];
-    }
-  return faces;
-}
-
-double total_volume(const xfem::TetMesh& m) {
-  double volume = 0;
-  for (int t = 0; t < m.tets.rows(); ++t) {
-    const double v = xfem::signed_volume(m, t);
-    CHECK(v > 0);
-    volume += v;
-  }
-  return volume;
-}
+using xfem_test::total_volume;
 
 }  // namespace
 
@@ -48,7 +26,7 @@ TEST_CASE("box_mesh: tets are positive, fill the box and are conforming", "[box_
   // Conforming: every interior face is shared by exactly two tets, boundary faces by one, and the
   // boundary has 2 triangles per square of the box surface.
   int boundary = 0;
-  for (const auto& [f, count] : face_counts(m)) {
+  for (const auto& [f, count] : xfem_test::face_counts(m.tets)) {
     CHECK(count <= 2);
     boundary += count == 1;
   }
@@ -103,7 +81,7 @@ TEST_CASE("box_mesh: a cut by duplicated nodes on the 2x4x14 beam, counted by ha
   // Conforming except across the cut: the cut's 2 x 4 squares of faces (i = 0 column: 4 squares,
   // 8 triangles) are boundary twice (once each side), so 16 extra boundary faces.
   int boundary = 0;
-  for (const auto& [f, count] : face_counts(m)) {
+  for (const auto& [f, count] : xfem_test::face_counts(m.tets)) {
     CHECK(count <= 2);
     boundary += count == 1;
   }

@@ -7,6 +7,7 @@
 
 #include "xfem/box_mesh.h"
 #include "xfem/error.h"
+#include "mesh_checks.h"
 
 namespace {
 
@@ -75,18 +76,8 @@ double triangle_area(const xfem::SplitMesh& s, const std::array<int, 3>& f) {
 // positive, every face shared by two tets except faces on the box's boundary and the wound's
 // triangles (each of which bounds exactly one tet). Returns the wound's area per side.
 std::map<int, double> check_conforming(const xfem::SplitMesh& s) {
-  std::map<std::array<int, 3>, int> faces;
-  for (int t = 0; t < s.tets.rows(); ++t) {
-    CHECK(tet_volume(s, t) > 0);
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f;
-      int n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != skip) f[n++] = s.tets(t, k);
-      std::sort(f.begin(), f.end());
-      ++faces[f];
-    }
-  }
+  for (int t = 0; t < s.tets.rows(); ++t) CHECK(tet_volume(s, t) > 0);
+  auto faces = xfem_test::face_counts(s.tets);
   std::set<std::array<int, 3>> wound;
   std::map<int, double> wound_area;
   for (int w = 0; w < s.wound.rows(); ++w) {

@@ -13,21 +13,13 @@
 #include "xfem/mesh_ordering.h"
 #include "xfem/organ_shape.h"
 #include "xfem/vtk_io.h"
+#include "mesh_checks.h"
 
 namespace {
 
 // Points on faces used by one tet only: the boundary.
 std::set<int> boundary_points(const xfem::TetMesh& m) {
-  std::map<std::array<int, 3>, int> faces;
-  for (int t = 0; t < m.tets.rows(); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f;
-      int n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != skip) f[n++] = m.tets(t, k);
-      std::sort(f.begin(), f.end());
-      ++faces[f];
-    }
+  const auto faces = xfem_test::face_counts(m.tets);
   std::set<int> points;
   for (const auto& [f, count] : faces) {
     CHECK(count <= 2);  // conforming
@@ -36,15 +28,7 @@ std::set<int> boundary_points(const xfem::TetMesh& m) {
   return points;
 }
 
-double total_volume(const xfem::TetMesh& m) {
-  double volume = 0;
-  for (int t = 0; t < m.tets.rows(); ++t) {
-    const double v = xfem::signed_volume(m, t);
-    CHECK(v > 0);
-    volume += v;
-  }
-  return volume;
-}
+using xfem_test::total_volume;
 
 // Every point is used by a tet.
 void check_all_points_used(const xfem::TetMesh& m) {
