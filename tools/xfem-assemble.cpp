@@ -23,10 +23,11 @@ int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(
       "xfem-assemble",
       "Assemble K u = f for an enriched mesh: element stiffness of formula (5) with the enriched basis\n"
-      "(closed form for plain tets, oversampling integration for tets with enriched DOFs), loads on the\n"
+      "(closed form for plain tets; tets with enriched DOFs split exactly along the cut, Gauss rules\n"
+      "collapsed onto the cut front where crack-tip functions live), loads on the\n"
       "original DOFs, and the Dirichlet data of problem.json (docs/FORMATS.md). Writes the system/\n"
       "directory xfem-solve reads: K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx, system.json.",
-      "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json --points 30 -o out/system");
+      "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json -o out/system");
   std::string input, cut_path, problem_path, output;
   int points = 0, refine = -1, order = 0;
   std::string rule;
@@ -36,26 +37,30 @@ int main(int argc, char** argv) {
                                        "needed when the mesh has enriched DOFs (N > NP)");
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
                                                "dirichlet, neumann, body_force)")->required();
-  app.add_option("--points", points, "oversampling points requested per enriched tet: the tet is split into m^3 "
-                                     "sub-tets, m the smallest with m^3 > points, one centroid point each "
-                                     "(default: problem.json's integration.points, else 30 as in the paper)")
+  app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
+                                     "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
+                                     "with m^3 > points, one centroid point each (default: problem.json's "
+                                     "integration.points, else 30 as in the paper)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--refine", refine, "in cut tets, split sub-tets the cut crosses into 8, up to this many times "
+  app.add_option("--refine", refine, "oversampling rule (implies --rule oversampling): in cut tets, split sub-tets "
+                                     "the cut crosses into 8, up to this many times "
                                      "(0 = the paper's uniform rule; default: problem.json's integration.refine, "
                                      "else 0); small pieces cut off a tet then get integration points")
       ->check(CLI::Range(0, 8));
-  app.add_option("--rule", rule, "integration of tets with enriched DOFs: oversampling (the paper's) or conforming "
-                                 "(cut elements split along the cut, Gauss rules collapsed onto the cut front; "
-                                 "default: problem.json's integration.rule, else oversampling)")
+  app.add_option("--rule", rule, "integration of tets with enriched DOFs: conforming (the default: cut elements "
+                                 "split exactly along the cut, one point per piece for the sign enrichment, Gauss "
+                                 "rules collapsed onto the cut front where branch functions live) or oversampling "
+                                 "(the paper's; default: problem.json's integration.rule, else conforming)")
       ->check(CLI::IsMember({"oversampling", "conforming"}));
   app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
-                                   "(default: problem.json's integration.order, else 5)")
+                                   "(default: problem.json's integration.order, else 3)")
       ->check(CLI::Range(1, 20));
   app.add_option("-o,--output", output, "system directory (created if missing)")->required();
   return xfem::cli::run(*tool, argc, argv, [&] {
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
+    else if (points > 0 || refine >= 0) problem.rule = xfem::Problem::Rule::Oversampling;
     if (order > 0) problem.order = order;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
     std::vector<std::string> warnings;
@@ -93,9 +98,9 @@ int main(int argc, char** argv) {
                     fixed3(s.load_seconds) + " s, write " + fixed3(write) + " s");
     const std::vector<long> unsupported = xfem::unsupported_dofs(system.K, system.np);
     if (!unsupported.empty())
-      xfem::cli::warn(std::to_string(unsupported.size()) + " enriched DOFs have no support (zero rows in K), first vector " +
-                      std::to_string(unsupported.front()) + ": no integration point lies in their support on one side "
-                      "of the cut (a thin sliver; more --points or --refine help); xfem-solve fixes them to 0");
+      xfem::cli::warn(std::to_string(unsupported.size()) + " enriched displacements have no integration point in "
+                      "their support: the cut stays closed there (xfem-solve fixes them to 0); use the default "
+                      "--rule conforming, or more --points / --refine");
     for (std::size_t i = 0; i < system.pieces.size(); ++i)
       if (!system.pieces[i].constrained)
         xfem::cli::warn("piece " + std::to_string(i + 1) + " (" + std::to_string(system.pieces[i].tets) +

@@ -15,6 +15,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "xfem/cut_pieces.h"
 #include "xfem/error.h"
 
 namespace xfem {
@@ -185,6 +186,64 @@ CrackFront extract_front(const TetMesh& mesh, const CutSurface& cut, const std::
   return CrackFront(std::move(front));
 }
 
+/// How each candidate tet meets the front: 0 not at all, 1 at a point only (a corner or an edge
+/// point of the tet lies on the front), 2 along a piece of positive length (the front passes
+/// through the tet, or along one of its faces or edges).
+std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, const std::vector<char>& candidate) {
+  std::vector<char> contact(mesh.tets.rows(), 0);
+  const auto& segs = front.segments();
+  if (segs.empty()) return contact;
+  std::vector<Segment> segments;
+  for (const auto& s : segs) segments.emplace_back(to_cgal(s.p0), to_cgal(s.p1));
+  SegmentTree tree(segments.cbegin(), segments.cend());
+  parallel_for(mesh.tets.rows(), [&](long b, long e) {
+    std::vector<SegmentTree::Primitive_id> hits;
+    for (long t = b; t < e; ++t) {
+      if (!candidate[t]) continue;
+      Eigen::Vector3d P[4];
+      CGAL::Bbox_3 box;
+      for (int k = 0; k < 4; ++k) {
+        P[k] = mesh.points.row(mesh.tets(t, k)).transpose();
+        box += to_cgal(P[k]).bbox();
+      }
+      hits.clear();
+      tree.all_intersected_primitives(box, std::back_inserter(hits));
+      if (hits.empty()) continue;
+      Eigen::Matrix3d J;
+      J << P[1] - P[0], P[2] - P[0], P[3] - P[0];
+      const Eigen::Matrix3d Jinv = J.inverse();
+      auto bary = [&](const Eigen::Vector3d& x) {
+        const Eigen::Vector3d l = Jinv * (x - P[0]);
+        return Eigen::Vector4d(1 - l.sum(), l[0], l[1], l[2]);
+      };
+      constexpr double eps = 1e-10;  // barycentric: a front this close to a face lies on it
+      for (const auto& h : hits) {
+        const FrontSegment& fs = segs[h - segments.cbegin()];
+        const Eigen::Vector4d la = bary(fs.p0), lb = bary(fs.p1);
+        const double length = (fs.p1 - fs.p0).norm();
+        double s0 = 0, s1 = 1;
+        for (int k = 0; k < 4 && s0 <= s1 + eps; ++k) {
+          const double d = lb[k] - la[k];
+          if (std::abs(d) <= eps) {
+            if (std::max(la[k], lb[k]) < -eps) s0 = 2;
+          } else if (d > 0) {
+            s0 = std::max(s0, (-eps - la[k]) / d);
+          } else {
+            s1 = std::min(s1, (-eps - la[k]) / d);
+          }
+        }
+        if (s0 > s1) continue;
+        // Positive length: longer than the tolerance band the clipping added at each end.
+        const double tolerance = 4 * eps / std::max(1e-300, (lb - la).cwiseAbs().maxCoeff());
+        const char kind = (s1 - s0) * length > 1e-9 * length + tolerance * length ? 2 : 1;
+        contact[t] = std::max(contact[t], kind);
+        if (contact[t] == 2) break;
+      }
+    }
+  });
+  return contact;
+}
+
 }  // namespace
 
 Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options) {
@@ -250,10 +309,12 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
     }
   }
 
-  // 3. Tets: cut edges, completely cut faces, class.
+  // 3. Cut edges and completely cut faces per tet (reported; the paper's rule of 3.3 classified by
+  //    them). A tet meets the cut when one of its edges does or one of its nodes lies on it.
   c.cut_edges.assign(T, 0);
   c.cut_faces.assign(T, 0);
   c.cut_class.assign(T, CutClass::Uncut);
+  std::vector<char> meets(T, 0);
   parallel_for(T, [&](long b, long e) {
     for (long t = b; t < e; ++t) {
       bool cut_edge[6];
@@ -267,44 +328,75 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       for (const auto& f : kFaceEdges) faces += cut_edge[f[0]] + cut_edge[f[1]] + cut_edge[f[2]] >= 2;
       c.cut_edges[t] = n;
       c.cut_faces[t] = faces;
-      c.cut_class[t] = n == 0 ? CutClass::Uncut : faces >= 3 ? CutClass::Complete : CutClass::Partial;
+      bool touches = n > 0;
+      for (int k = 0; k < 4; ++k) touches = touches || c.on_cut[mesh.tets(t, k)];
+      meets[t] = touches;
     }
   });
 
-  // 4. Enrichment: branch for nodes of partially cut tets, sign (D3) for the other nodes of
-  //    completely cut tets.
-  c.enrichment.assign(V, Enrichment::None);
-  std::vector<char> in_complete(V, 0);
-  for (long t = 0; t < T; ++t) {
-    if (c.cut_class[t] == CutClass::Partial)
-      for (int k = 0; k < 4; ++k) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
-    if (c.cut_class[t] != CutClass::Complete) continue;
-    for (int k = 0; k < 4; ++k) {
-      const int m = mesh.tets(t, k);
-      in_complete[m] = std::max<char>(in_complete[m], 1);
-      for (int j = 0; j < 4; ++j) {
-        const int o = mesh.tets(t, j);
-        if (c.side[o] != c.side[m] && !c.on_cut[o]) in_complete[m] = 2;
-      }
-    }
-  }
-  for (long m = 0; m < V; ++m)
-    if (c.enrichment[m] == Enrichment::None && in_complete[m] == 2) c.enrichment[m] = Enrichment::Sign;
-    else if (c.enrichment[m] == Enrichment::None && in_complete[m] == 1) ++c.counts.sign_dropped;
-
-  // 5. The front, from the tets near the cut.
+  // 4. The front (the cut's boundary inside the body), from the tets near the cut, and how each
+  //    tet meets it: the front passing through a tet makes it partially cut (by geometry, not by
+  //    counting faces: a fold or a cut ending on a face is no front).
   std::vector<char> near_node(V, 0), candidate(T, 0);
   for (long t = 0; t < T; ++t)
-    if (c.cut_class[t] != CutClass::Uncut)
+    if (meets[t])
       for (int k = 0; k < 4; ++k) near_node[mesh.tets(t, k)] = 1;
   for (long t = 0; t < T; ++t)
     for (int k = 0; k < 4; ++k) candidate[t] |= near_node[mesh.tets(t, k)];
   c.front = extract_front(mesh, cut, candidate);
+  const std::vector<char> contact = front_contact(mesh, c.front, candidate);
+  if (options.progress) options.progress(0.92);
+
+  // 5. The tets the cut separates: split along the cut (cut_pieces.h), exact volumes per side.
+  //    Completely cut = not partially cut, meets the cut, and has nodes on both sides or volume on
+  //    both sides (a fold inside the tet).
+  std::vector<double> above(T, 0.0), below(T, 0.0);
+  parallel_for(T, [&](long b, long e) {
+    for (long t = b; t < e; ++t) {
+      if (contact[t] == 2) {
+        c.cut_class[t] = CutClass::Partial;
+        continue;
+      }
+      if (!meets[t]) continue;
+      TetCorners p;
+      for (int k = 0; k < 4; ++k) p[k] = mesh.points.row(mesh.tets(t, k)).transpose();
+      const CutPieces pieces = split_by_cut(p, cut);
+      above[t] = pieces.volume_above;
+      below[t] = pieces.volume_below;
+      bool both_sides = false;
+      for (int k = 1; k < 4; ++k) both_sides = both_sides || c.side[mesh.tets(t, k)] != c.side[mesh.tets(t, 0)];
+      const double whole = pieces.volume_above + pieces.volume_below;
+      if (both_sides || (pieces.volume_above > 1e-12 * whole && pieces.volume_below > 1e-12 * whole))
+        c.cut_class[t] = CutClass::Complete;
+    }
+  });
+
+  // 6. Enrichment. Branch: the nodes of every tet the front touches (passes through, or touches at a
+  //    point: there the cut's extension ahead of the front would otherwise open a sign function).
+  //    Sign: the other nodes of completely cut tets whose support has volume on the side opposite
+  //    the node's own, at least options.tiny_support of the support's volume; below that the sign
+  //    function is nearly zero and makes K near-singular, and it is removed (counted, sign_tiny).
+  c.enrichment.assign(V, Enrichment::None);
+  std::vector<double> support(V, 0.0), opposite(V, 0.0);
+  for (long t = 0; t < T; ++t) {
+    if (contact[t])
+      for (int k = 0; k < 4; ++k) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
+    const double v = std::abs(signed_volume(mesh, static_cast<int>(t)));
+    for (int k = 0; k < 4; ++k) {
+      const int m = mesh.tets(t, k);
+      support[m] += v;
+      if (c.cut_class[t] == CutClass::Complete) opposite[m] += c.side[m] > 0 ? below[t] : above[t];
+    }
+  }
+  c.opposite_fraction.assign(V, 0.0);
+  for (long m = 0; m < V; ++m) {
+    const double fraction = support[m] > 0 ? opposite[m] / support[m] : 0.0;
+    c.opposite_fraction[m] = fraction;
+    if (c.enrichment[m] != Enrichment::None || !(fraction > 1e-12)) continue;
+    if (fraction >= options.tiny_support) c.enrichment[m] = Enrichment::Sign;
+    else ++c.counts.sign_tiny;
+  }
   const long partial = std::count(c.cut_class.begin(), c.cut_class.end(), CutClass::Partial);
-  if (partial > 0 && c.front.empty())
-    throw Error("cut: " + std::to_string(partial) +
-                " partially cut tets but no cut front inside the body (the crack-tip frames of their "
-                "branch nodes are undefined)");
 
   // 6. Optional radius enrichment around the front.
   if (options.tip_radius > 0 && !c.front.empty()) {
@@ -361,12 +453,12 @@ Classification classify_without_cut(const TetMesh& mesh) {
 
 std::vector<std::string> count_names() {
   return {"points", "tets", "edges", "cut_edges", "points_on_cut", "uncut", "partial", "complete",
-          "none", "sign", "branch", "sign_dropped", "radius_branch", "front_segments"};
+          "none", "sign", "branch", "sign_tiny", "radius_branch", "front_segments"};
 }
 
 std::vector<long> count_values(const Classification::Counts& n) {
   return {n.points, n.tets,   n.edges, n.cut_edges, n.points_on_cut, n.uncut,         n.partial,
-          n.complete, n.none, n.sign,  n.branch,    n.sign_dropped,  n.radius_branch, n.front_segments};
+          n.complete, n.none, n.sign,  n.branch,    n.sign_tiny,  n.radius_branch, n.front_segments};
 }
 
 void store_classification(const Classification& c, TetMesh& mesh) {

@@ -19,6 +19,10 @@ struct ClassifyOptions {
   /// "Radius enrichment": also branch-enrich every node within this distance (metres) of the
   /// cut front. 0 = the paper's rule (only the nodes of partially cut elements).
   double tip_radius = 0.0;
+  /// A node is sign enriched only if the part of its support on the other side of the cut is at
+  /// least this fraction of the support's volume (below it the sign function is nearly zero and
+  /// K near-singular: the enrichment is removed and counted as sign_tiny).
+  double tiny_support = 1e-4;
   /// Called with the fraction done in [0, 1] (may be empty).
   std::function<void(double)> progress;
 };
@@ -31,6 +35,7 @@ struct Classification {
   std::vector<CutClass> cut_class;    ///< per tet
   std::vector<int> cut_edges;         ///< per tet: how many of its 6 edges are cut (0..6)
   std::vector<int> cut_faces;         ///< per tet: how many of its 4 faces are completely cut
+  std::vector<double> opposite_fraction;  ///< per point: volume of its support on the other side of the cut / support volume
   CrackFront front;                   ///< the cut front inside the body, oriented (crack_front.h)
 
   /// Summary counts (array `classification_counts`, JSON of --summary).
@@ -38,7 +43,7 @@ struct Classification {
     long points = 0, tets = 0, edges = 0, cut_edges = 0, points_on_cut = 0;
     long uncut = 0, partial = 0, complete = 0;
     long none = 0, sign = 0, branch = 0;
-    long sign_dropped = 0;   ///< nodes of completely cut tets left unenriched by rule D3
+    long sign_tiny = 0;      ///< nodes whose support lies on the other side by less than tiny_support: not enriched
     long radius_branch = 0;  ///< nodes branch-enriched only because of tip_radius
     long front_segments = 0;
   } counts;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "xfem/cut_pieces.h"
 #include "xfem/element_split.h"
 #include "xfem/enriched_basis.h"
 #include "xfem/error.h"
@@ -19,7 +20,8 @@ namespace {
 constexpr double kOnFront = 1e-6;
 
 // A tet part is bisected while the front is nearer to it than kNear times its length, at most
-// kMaxLevels times (a front through an edge's interior would otherwise split it forever). A tet
+// kMaxLevels times (a front through an edge's interior would otherwise split it forever; fewer for
+// low orders, see append_tet_rule). A tet
 // without a vertex on the front (blending elements, pieces of completely cut ones) is split only
 // while the front is nearer than kNearFar times its longest edge, at most kMaxLevelsFar times: its
 // integrand is bounded, and splitting every tet within one size of the front costs 20x the points.
@@ -154,7 +156,10 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     q[j] = mid;
     append_tet_rule(q, front, n, side, out, level + 1);
   };
-  const bool may_split = level < kMaxLevels;
+  // Bisection pays only when the Gauss rule itself is accurate: the depth grows with the order
+  // (order 3, the default: 2 levels at the front, none away from it; order 7 and up: 8 and 8).
+  const int max_near = std::min(kMaxLevels, 2 * (n - 2)), max_far = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
+  const bool may_split = level < max_near;
   int best = 0;
   if (!front.empty()) {
     double longest = 0;
@@ -198,7 +203,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         best = e;
       }
     }
-    if (level < kMaxLevelsFar && nearest < kNearFar * longest) {
+    if (level < max_far && nearest < kNearFar * longest) {
       for (int e = 0; e < 6; ++e)
         if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
     }
@@ -216,74 +221,6 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
 }
 
 namespace {
-
-// Where the cut crosses segment [a, b] whose ends lie on opposite sides (side(a) = sa): a few steps
-// onto the plane of the closest cut triangle (exact for a planar cut), bisection by side() where
-// those fail. Returns a point of the closed segment.
-Eigen::Vector3d crossing(const CutSurface& cut, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int sa) {
-  double lo = 0, hi = 1, t = 0.5;
-  for (int it = 0; it < 4; ++it) {
-    const CutSurface::Closest c = cut.closest(a + t * (b - a));
-    const Eigen::Vector3d n = cut.unit_normal(c.triangle);
-    const double den = n.dot(b - a);
-    if (den == 0.0) break;
-    const double next = n.dot(c.point - a) / den;
-    if (!(next >= 0.0 && next <= 1.0)) break;
-    const bool done = std::abs(next - t) < 1e-15;
-    t = next;
-    if (done) return a + t * (b - a);
-  }
-  if (cut.side(a + t * (b - a)) == sa) lo = t; else hi = t;  // fall back: bisect on H
-  for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (cut.side(a + mid * (b - a)) == sa ? lo : hi) = mid;
-  }
-  return a + 0.5 * (lo + hi) * (b - a);
-}
-
-// The prism with triangles (a0, a1, a2) and (b0, b1, b2), a_i b_i its side edges, as 3 tets.
-void add_prism(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
-               const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2, int side,
-               CutElementSplits& out) {
-  out.tets.push_back({a0, a1, a2, b0});
-  out.tets.push_back({a1, a2, b0, b1});
-  out.tets.push_back({a2, b0, b1, b2});
-  for (int i = 0; i < 3; ++i) out.side.push_back(side);
-}
-
-// A completely cut tet split at the points where the cut crosses its edges between nodes of
-// opposite sides (3 or 4 of them: the marching-tetrahedra cases), one side per piece. Exact for a
-// cut planar inside the element; a curved one is replaced by the surface through these points.
-void split_completely_cut(const EnrichedMesh& em, int t, CutElementSplits& out) {
-  std::array<Eigen::Vector3d, 4> p;
-  std::vector<int> up, down;
-  for (int c = 0; c < 4; ++c) {
-    const int k = em.mesh.tets(t, c);
-    p[c] = em.mesh.points.row(k).transpose();
-    (em.side[k] > 0 ? up : down).push_back(c);
-  }
-  if (up.empty() || down.empty()) {
-    out.tets.push_back(p);
-    out.side.push_back(up.empty() ? -1 : 1);
-    return;
-  }
-  auto e = [&](int i, int j) { return crossing(*em.cut, p[i], p[j], em.side[em.mesh.tets(t, i)]); };
-  if (up.size() == 2) {
-    const int P0 = up[0], P1 = up[1], Q0 = down[0], Q1 = down[1];
-    const Eigen::Vector3d e00 = e(P0, Q0), e01 = e(P0, Q1), e10 = e(P1, Q0), e11 = e(P1, Q1);
-    add_prism(p[P0], e00, e01, p[P1], e10, e11, 1, out);
-    add_prism(p[Q0], e00, e10, p[Q1], e01, e11, -1, out);
-    return;
-  }
-  // One node L alone on its side: the tet at L and the prism between the cut and the other three.
-  const bool lone_up = up.size() == 1;
-  const int L = lone_up ? up[0] : down[0];
-  const std::vector<int>& rest = lone_up ? down : up;
-  const Eigen::Vector3d e0 = e(L, rest[0]), e1 = e(L, rest[1]), e2 = e(L, rest[2]);
-  out.tets.push_back({p[L], e0, e1, e2});
-  out.side.push_back(lone_up ? 1 : -1);
-  add_prism(e0, e1, e2, p[rest[0]], p[rest[1]], p[rest[2]], lone_up ? -1 : 1, out);
-}
 
 }  // namespace
 
@@ -322,7 +259,11 @@ CutElementSplits split_cut_elements(const EnrichedMesh& em) {
     if (em.cut_class[t] == 0) continue;
     out.index[t] = static_cast<int>(out.first.size()) - 1;
     if (em.cut_class[t] == 2) {
-      split_completely_cut(em, t, out);
+      TetCorners p;
+      for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+      const CutPieces pieces = split_by_cut(p, *em.cut);
+      out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
+      out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
     } else {
       const std::size_t i = next_partial++;
       for (int s = partial_first[i]; s < partial_first[i + 1]; ++s) {
@@ -346,7 +287,20 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
     append_tet_rule(p, em.front, n, 0, out);
     return;
   }
-  for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) append_tet_rule(splits.tets[s], em.front, n, splits.side[s], out);
+  // The sign enrichment is constant on each piece and the shape functions linear: one point per
+  // piece integrates exactly. Branch functions need the front-singular Gauss rule.
+  bool branch = false;
+  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
+    const auto& q = splits.tets[s];
+    if (branch) {
+      append_tet_rule(q, em.front, n, splits.side[s], out);
+    } else {
+      out.x.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
+      out.weights.push_back(std::abs(signed_volume(q[0], q[1], q[2], q[3])));
+      out.side.push_back(splits.side[s]);
+    }
+  }
 }
 
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,

@@ -5,8 +5,10 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_3/Tetrahedron_3_Triangle_3.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -183,6 +185,34 @@ bool CutSurface::meets_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& 
 }
 
 const std::vector<CutSurface::BoundaryEdge>& CutSurface::boundary_edges() const { return impl_->boundary; }
+
+namespace {
+Kernel::Tetrahedron_3 to_cgal(const std::array<Eigen::Vector3d, 4>& p) {
+  return {to_cgal(p[0]), to_cgal(p[1]), to_cgal(p[2]), to_cgal(p[3])};
+}
+}  // namespace
+
+std::vector<int> CutSurface::triangles_meeting(const std::array<Eigen::Vector3d, 4>& p) const {
+  const Impl& m = *impl_;
+  CGAL::Bbox_3 box;
+  for (const auto& x : p) box += to_cgal(x).bbox();
+  std::vector<Tree::Primitive_id> hits;
+  m.tree.all_intersected_primitives(box, std::back_inserter(hits));
+  const Kernel::Tetrahedron_3 tet = to_cgal(p);
+  const bool solid = !tet.is_degenerate();
+  std::vector<int> out;
+  for (const auto& h : hits) {
+    if (solid ? CGAL::do_intersect(*h, tet) : true) out.push_back(static_cast<int>(h - m.triangles.cbegin()));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool CutSurface::triangle_meets(int t, const std::array<Eigen::Vector3d, 4>& p) const {
+  const Kernel::Tetrahedron_3 tet = to_cgal(p);
+  if (tet.is_degenerate()) return false;
+  return CGAL::do_intersect(impl_->triangles.at(t), tet);
+}
 
 Eigen::Vector3d CutSurface::unit_normal(int t) const {
   if (t < 0 || t >= static_cast<int>(impl_->normals.size()))

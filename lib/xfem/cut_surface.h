@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -50,6 +51,13 @@ class CutSurface {
 
   /// Unit normal of triangle `t`.
   Eigen::Vector3d unit_normal(int t) const;
+
+  /// The triangles that meet the closed tetrahedron (p[0], .., p[3]), in increasing order (exact
+  /// predicates on the given coordinates).
+  std::vector<int> triangles_meeting(const std::array<Eigen::Vector3d, 4>& p) const;
+
+  /// Does triangle `t` meet the closed tetrahedron p? Exact predicates.
+  bool triangle_meets(int t, const std::array<Eigen::Vector3d, 4>& p) const;
 
  private:
   struct Impl;

@@ -10,10 +10,13 @@
 #include <array>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <tuple>
 
+#include "xfem/cut_pieces.h"
+#include "xfem/cut_surface.h"
 #include "xfem/error.h"
 
 namespace xfem {
@@ -29,9 +32,14 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Point to_cgal(const Eigen::Vector3d& p) { return Point(p[0], p[1], p[2]); }
 
-// Edge points are kept off the edge's nodes by this fraction of the edge: a cut through a node
-// would otherwise give zero-volume pieces. The shift is far below any visible scale.
-constexpr double kEdgeClamp = 1e-9;
+// A cut through a node puts the edge point on the node (a separate point, one copy per side): the
+// pieces between it and the node have zero volume and are left out (kDegenerate), so the volumes
+// on each side stay exact.
+constexpr double kEdgeClamp = 0.0;
+
+// Pieces below this fraction of their element's volume, and wound triangles below this fraction of
+// the element's longest edge squared, are degenerate (a cut through a node, an edge or a face).
+constexpr double kDegenerate = 1e-14;
 
 // Front segments reach this fraction of their length beyond their ends when faces are pierced.
 constexpr double kFrontReach = 1e-6;
@@ -220,6 +228,25 @@ struct Splitter {
   std::vector<int> point_side_, point_tet_;
 };
 
+// Do the cut triangles meeting the tet all lie in one plane? Then the face-by-face split through
+// the edge points is exact and conforming; otherwise (a fold inside) the tet is split into its
+// exact pieces.
+bool planar_inside(const CutSurface& cut, const TetCorners& p) {
+  const std::vector<int> triangles = cut.triangles_meeting(p);
+  if (triangles.size() <= 1) return true;
+  double h = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) h = std::max(h, (p[i] - p[j]).norm());
+  const TriangleMesh& m = cut.mesh();
+  const Eigen::Vector3d n0 = cut.unit_normal(triangles[0]), x0 = m.points.row(m.triangles(triangles[0], 0)).transpose();
+  for (const int f : triangles) {
+    if (cut.unit_normal(f).dot(n0) < 1 - 1e-12) return false;
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(n0.dot(m.points.row(m.triangles(f, c)).transpose() - x0)) > 1e-12 * h) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
@@ -238,6 +265,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
                   ", expected 0, 1 or 2");
 
   Splitter s(mesh, side, cut, front);
+  std::unique_ptr<CutSurface> cut_surface;  // built on the first folded element
   // Each node's field is evaluated in the first tet that holds it.
   std::vector<int> node_tet(np, -1);
   for (int t = nt - 1; t >= 0; --t)
@@ -249,8 +277,11 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
   auto position = [&](int id) -> Eigen::Vector3d {
     return id < np ? s.node(id) : s.points_[id - np];
   };
+  double parent_volume = 0.0, parent_edge = 0.0;  // of the element being split
   auto add_tet = [&](std::array<int, 4> v, int parent, int tet_side) {
-    if (signed_volume(position(v[0]), position(v[1]), position(v[2]), position(v[3])) < 0) std::swap(v[1], v[2]);
+    const double volume = signed_volume(position(v[0]), position(v[1]), position(v[2]), position(v[3]));
+    if (tet_side != 0 && std::abs(volume) <= kDegenerate * parent_volume) return;
+    if (volume < 0) std::swap(v[1], v[2]);
     tets.push_back(v);
     out.parent.push_back(parent);
     out.tet_side.push_back(tet_side);
@@ -276,6 +307,58 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
           edge_sum += s.edge_points_[e];
           ++edge_count;
         }
+    parent_volume = std::abs(signed_volume(s.node(v[0]), s.node(v[1]), s.node(v[2]), s.node(v[3])));
+    parent_edge = 0.0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (s.node(v[i]) - s.node(v[j])).norm());
+
+    // An element the cut separates but not in one plane (a fold inside it): its exact pieces
+    // (cut_pieces.h) with their faces on the cut as the wound. Their points are the element's own.
+    if (cut_class[t] == 2 && (closed || !any_split)) {
+      if (!cut_surface) cut_surface = std::make_unique<CutSurface>(cut);
+      TetCorners corners;
+      for (int c = 0; c < 4; ++c) corners[c] = s.node(v[c]);
+      if (!planar_inside(*cut_surface, corners)) {
+        const CutPieces pieces = split_by_cut(corners, *cut_surface);
+        std::map<std::tuple<double, double, double, int>, int> ids;  // (position, side) -> output id
+        auto id_of = [&](const Eigen::Vector3d& x, int sd) {
+          for (int c = 0; c < 4; ++c)
+            if (side[v[c]] == sd && s.node(v[c]) == x) return v[c];
+          const auto key = std::make_tuple(x.x(), x.y(), x.z(), sd);
+          const auto it = ids.find(key);
+          if (it != ids.end()) return it->second;
+          const int id = s.add_point(x, sd, t);
+          ids.emplace(key, id);
+          return id;
+        };
+        for (std::size_t i = 0; i < pieces.tets.size(); ++i) {
+          const TetCorners& q = pieces.tets[i];
+          const int sd = pieces.side[i];
+          std::array<int, 4> ids4;
+          for (int c = 0; c < 4; ++c) ids4[c] = id_of(q[c], sd);
+          add_tet(ids4, t, sd);
+          for (int skip = 0; skip < 4; ++skip) {  // faces on the cut, oriented out of the piece
+            std::array<int, 3> f;
+            int n = 0;
+            for (int c = 0; c < 4; ++c)
+              if (c != skip) f[n++] = c;
+            const Eigen::Vector3d a = q[f[0]], b = q[f[1]], d = q[f[2]];
+            const Eigen::Vector3d normal = (b - a).cross(d - a);
+            if (normal.norm() <= kDegenerate * parent_edge * parent_edge) continue;
+            const double tolerance = 1e-9 * parent_edge;
+            if (cut_surface->closest((a + b + d) / 3).distance > tolerance || cut_surface->closest(a).distance > tolerance ||
+                cut_surface->closest(b).distance > tolerance || cut_surface->closest(d).distance > tolerance)
+              continue;
+            std::array<int, 3> w = {ids4[f[0]], ids4[f[1]], ids4[f[2]]};
+            if (normal.dot(q[skip] - a) > 0) std::swap(w[1], w[2]);
+            wound.push_back(w);
+            out.wound_side.push_back(sd);
+          }
+        }
+        ++out.split_complete;
+        continue;
+      }
+    }
     if (!any_split) {
       add_tet(v, t, 0);
       continue;
@@ -301,7 +384,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
       // Every face point appears in four fan triangles of its face: the mean is unaffected.
       if (front_count > 0) centre = front_sum / front_count;
     }
-    {
+    if (!closed) {  // a centre on the front; a crossed element's centre stays on the cut (exact volumes)
       Eigen::Matrix3d J;
       for (int c = 0; c < 3; ++c) J.col(c) = s.node(v[c + 1]) - s.node(v[0]);
       const Eigen::Vector3d l = J.partialPivLu().solve(centre - s.node(v[0]));
@@ -348,6 +431,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
         std::array<int, 3> w = {centre_ids[sd + 1], s.output_id(seg[0], sd, t, centre_ids),
                                 s.output_id(seg[1], sd, t, centre_ids)};
         const Eigen::Vector3d n = (position(w[1]) - position(w[0])).cross(position(w[2]) - position(w[0]));
+        if (n.norm() <= kDegenerate * parent_edge * parent_edge) continue;  // a cut through a node or an edge
         if (sd * n.dot(up) > 0) std::swap(w[1], w[2]);
         wound.push_back(w);
         out.wound_side.push_back(sd);

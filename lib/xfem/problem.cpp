@@ -167,6 +167,8 @@ Problem parse_problem(const Json& j, const std::string& file) {
       if (name != "oversampling" && name != "conforming")
         rule.fail("must be \"oversampling\" or \"conforming\", got \"" + name + "\"");
       p.rule = name == "conforming" ? Problem::Rule::Conforming : Problem::Rule::Oversampling;
+    } else if (integration.has("points") || integration.has("refine")) {
+      p.rule = Problem::Rule::Oversampling;  // files written before the conforming default keep their meaning
     }
     if (integration.has("order")) {
       const Node order = integration.at("order");
@@ -174,8 +176,7 @@ Problem parse_problem(const Json& j, const std::string& file) {
         order.fail("must be an integer in 1..20, got " + order.j.dump());
       p.order = order.j.get<int>();
     }
-    // points is required for the paper's rule only (a conforming rule needs none).
-    if (p.rule == Problem::Rule::Oversampling || integration.has("points")) {
+    if (integration.has("points")) {
       const Node points = integration.at("points");
       if (!points.j.is_number_integer() || points.j.get<long>() < 1 || points.j.get<long>() > 100000)
         points.fail("must be an integer in 1..100000, got " + points.j.dump());

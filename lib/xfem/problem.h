@@ -57,8 +57,8 @@ struct Problem {
   /// cut-conforming, front-singular rule of conforming_quadrature.h with `order` Gauss points per
   /// direction of every sub-tet.
   enum class Rule { Oversampling, Conforming };
-  Rule rule = Rule::Oversampling;
-  int order = 5;        ///< conforming rule: Gauss points per direction (1..20)
+  Rule rule = Rule::Conforming;
+  int order = 3;        ///< conforming rule: Gauss points per direction (1..20) where branch functions live
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3

@@ -29,7 +29,7 @@ bad() {  # bad <name> <sed expression on the beam problem>
 bad missing_e 's/"E": 300e3, //';            expect_error "missing field 'material.E'" "$S/missing_e.json"
 bad negative_e 's/"E": 300e3/"E": -1/';      expect_error "material.E must be positive, got -1" "$S/negative_e.json"
 bad nu 's/"nu": 0.35/"nu": 0.5/';            expect_error "material.nu must lie in (-1, 0.5), got 0.5" "$S/nu.json"
-bad unknown 's/"integration"/"integraton"/'; expect_error "unknown key 'integraton'" "$S/unknown.json"
+bad unknown 's/"dirichlet"/"dirichlett"/'; expect_error "unknown key 'dirichlett'" "$S/unknown.json"
 bad empty 's/"point": \[0, 0, 0.199\]/"point": [0, 0, 0.2]/'
 expect_error "empty.json: dirichlet[1] ('pulled edge z >= 0.199, x <= 0.001') selects no node" "$S/empty.json"
 expect_error "cannot open" "$S/no_such_problem.json"

@@ -270,7 +270,8 @@ TEST_CASE("classification: degenerate geometry follows rules D1-D4", "[classific
       // D2: the upper layer only touches the cut from its side: uncut; the lower one is cut.
       CHECK(c.cut_class[t] == (zmax > 0.5 ? CutClass::Uncut : CutClass::Complete));
     }
-    CHECK(c.counts.sign_dropped > 0);
+    // Nodes below the plane have no support above it: nothing to enrich, nothing tiny removed.
+    CHECK(c.counts.sign_tiny == 0);
   }
   SECTION("a cut through the whole body: no partial tets, no front") {
     const auto mesh = xfem::box_mesh({2, 2, 3}, {0, 0, 0}, {1, 1, 1});
@@ -330,12 +331,45 @@ TEST_CASE("classification: radius enrichment branch-enriches nodes near the fron
   }
 }
 
-TEST_CASE("classification: partially cut tets without a front inside the body are an error", "[classification]") {
-  // A cut lying in the body's surface face z = 0 with its boundary on the surface too: edges in
-  // that face touch it, but the front pieces are all on the surface (D4).
+TEST_CASE("classification: a cut lying in a surface face with its boundary on the surface separates nothing",
+          "[classification]") {
+  // Edges in the face z = 0 touch the cut, but the front pieces all lie on the surface (D4) and the
+  // cut separates no volume: no tet is partially cut, nothing is enriched.
   const auto mesh = single_tet({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
-  CHECK_THROWS_WITH(xfem::classify(mesh, xfem::CutSurface(rectangle(0.2, 0.3, -1, 0.1, 0.0))),
-                    Catch::Contains("partially cut tets but no cut front inside the body"));
+  const auto c = xfem::classify(mesh, xfem::CutSurface(rectangle(0.2, 0.3, -1, 0.1, 0.0)));
+  CHECK(c.counts.partial == 0);
+  CHECK(c.counts.sign + c.counts.branch == 0);
+}
+
+TEST_CASE("classification: a folded cut through the body is completely cut, with no front", "[classification]") {
+  // A zig-zag sheet z = 0.5 +- 0.15 with folds across the width (y), reaching outside the box on all
+  // sides: the paper's face count calls tets at a fold partially cut; geometry says they are cut through.
+  const auto mesh = xfem::box_mesh({5, 2, 4}, {0, 0, 0}, {1, 0.4, 1});
+  xfem::TriangleMesh zz;
+  const double xs[] = {-0.2, 0.13, 0.41, 0.77, 1.2};
+  const double zs[] = {0.5, 0.65, 0.37, 0.62, 0.45};
+  zz.points.resize(10, 3);
+  for (int i = 0; i < 5; ++i) {
+    zz.points.row(2 * i) << xs[i], -0.2, zs[i];
+    zz.points.row(2 * i + 1) << xs[i], 0.6, zs[i];
+  }
+  zz.triangles.resize(8, 3);
+  for (int i = 0; i < 4; ++i) {
+    zz.triangles.row(2 * i) << 2 * i, 2 * i + 2, 2 * i + 3;
+    zz.triangles.row(2 * i + 1) << 2 * i, 2 * i + 3, 2 * i + 1;
+  }
+  const auto c = xfem::classify(mesh, xfem::CutSurface(zz));
+  CHECK(c.front.empty());
+  CHECK(c.counts.partial == 0);
+  CHECK(c.counts.branch == 0);
+  CHECK(c.counts.complete > 0);
+  auto g = [&](double x) {
+    for (int i = 0; i < 4; ++i)
+      if (x <= xs[i + 1]) return zs[i] + (x - xs[i]) / (xs[i + 1] - xs[i]) * (zs[i + 1] - zs[i]);
+    return zs[4];
+  };
+  for (int i = 0; i < mesh.points.rows(); ++i)
+    CHECK(c.side[i] == (mesh.points(i, 2) >= g(mesh.points(i, 0)) ? 1 : -1));
 }
 
 TEST_CASE("classification: without a cut everything is uncut and plain", "[classification]") {

@@ -230,10 +230,14 @@ TEST_CASE("conforming_quadrature: problem.json integration.rule and order", "[co
   const xfem::Problem p = parse(R"({"rule": "conforming", "order": 7})");
   CHECK(p.rule == xfem::Problem::Rule::Conforming);
   CHECK(p.order == 7);
-  CHECK(parse(R"({"rule": "conforming"})").order == 5);
+  CHECK(parse(R"({"rule": "conforming"})").order == 3);
+  // The conforming rule is the default; points or refine alone keep a file's old meaning.
+  CHECK(xfem::parse_problem(xfem::Json::parse(R"({"material": {"E": 1, "nu": 0.3}})"), "p.json").rule ==
+        xfem::Problem::Rule::Conforming);
+  CHECK(parse(R"({"refine": 1})").rule == xfem::Problem::Rule::Oversampling);
   CHECK_THROWS_WITH(parse(R"({"rule": "gauss"})"),
                     "problem.json: integration.rule must be \"oversampling\" or \"conforming\", got \"gauss\"");
   CHECK_THROWS_WITH(parse(R"({"rule": "conforming", "order": 0})"),
                     "problem.json: integration.order must be an integer in 1..20, got 0");
-  CHECK_THROWS_WITH(parse(R"({"rule": "oversampling"})"), "problem.json: missing field 'integration.points'");
+  CHECK(parse(R"({"rule": "oversampling"})").points == 30);
 }

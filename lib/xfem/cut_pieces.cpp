@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/cut_pieces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "xfem/error.h"
+#include "xfem/mesh.h"
+
+namespace xfem {
+namespace {
+
+double volume(const TetCorners& t) { return std::abs(signed_volume(t[0], t[1], t[2], t[3])); }
+
+double longest_edge(const TetCorners& p) {
+  double h = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) h = std::max(h, (p[i] - p[j]).norm());
+  return h;
+}
+
+// The prism with triangles (a0, a1, a2) and (b0, b1, b2), a_i b_i its side edges, as 3 tets.
+void add_prism(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+               const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2,
+               std::vector<TetCorners>& out) {
+  out.push_back({a0, a1, a2, b0});
+  out.push_back({a1, a2, b0, b1});
+  out.push_back({a2, b0, b1, b2});
+}
+
+}  // namespace
+
+void split_by_plane(const TetCorners& p, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                    double tolerance, std::vector<TetCorners>& above, std::vector<TetCorners>& below) {
+  double d[4];
+  std::vector<int> pos, neg, zero;
+  for (int k = 0; k < 4; ++k) {
+    d[k] = normal.dot(p[k] - point);
+    if (d[k] > tolerance) pos.push_back(k);
+    else if (d[k] < -tolerance) neg.push_back(k);
+    else zero.push_back(k);
+  }
+  if (neg.empty()) return above.push_back(p);
+  if (pos.empty()) return below.push_back(p);
+  // The point where the plane crosses edge (i, j), i and j strictly on opposite sides.
+  auto x = [&](int i, int j) -> Eigen::Vector3d { return p[i] + d[i] / (d[i] - d[j]) * (p[j] - p[i]); };
+  if (pos.size() == 1 && neg.size() == 1) {  // two corners on the plane: two tets
+    const Eigen::Vector3d c = x(pos[0], neg[0]);
+    above.push_back({p[pos[0]], c, p[zero[0]], p[zero[1]]});
+    below.push_back({p[neg[0]], c, p[zero[0]], p[zero[1]]});
+    return;
+  }
+  const bool lone_above = pos.size() == 1;
+  std::vector<TetCorners>& lone_out = lone_above ? above : below;
+  std::vector<TetCorners>& rest_out = lone_above ? below : above;
+  if (zero.size() == 1) {  // one corner Z on the plane: a tet at the lone corner L, a pyramid with apex Z
+    const int L = lone_above ? pos[0] : neg[0];
+    const std::vector<int>& rest = lone_above ? neg : pos;
+    const int Z = zero[0], O1 = rest[0], O2 = rest[1];
+    const Eigen::Vector3d x1 = x(L, O1), x2 = x(L, O2);
+    lone_out.push_back({p[L], x1, x2, p[Z]});
+    rest_out.push_back({p[Z], p[O1], p[O2], x2});  // base O1 O2 x2 x1 (a planar quad in face L O1 O2)
+    rest_out.push_back({p[Z], p[O1], x2, x1});
+    return;
+  }
+  if (pos.size() == 2) {  // two and two: two prisms
+    const int P0 = pos[0], P1 = pos[1], Q0 = neg[0], Q1 = neg[1];
+    const Eigen::Vector3d e00 = x(P0, Q0), e01 = x(P0, Q1), e10 = x(P1, Q0), e11 = x(P1, Q1);
+    add_prism(p[P0], e00, e01, p[P1], e10, e11, above);
+    add_prism(p[Q0], e00, e10, p[Q1], e01, e11, below);
+    return;
+  }
+  // One corner alone on its side: a tet at it, a prism between the plane and the other three.
+  const int L = lone_above ? pos[0] : neg[0];
+  const std::vector<int>& rest = lone_above ? neg : pos;
+  const Eigen::Vector3d x0 = x(L, rest[0]), x1 = x(L, rest[1]), x2 = x(L, rest[2]);
+  lone_out.push_back({p[L], x0, x1, x2});
+  add_prism(x0, x1, x2, p[rest[0]], p[rest[1]], p[rest[2]], rest_out);
+}
+
+CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut) {
+  const double whole = volume(p);
+  const double tolerance = 1e-12 * longest_edge(p);
+  const TriangleMesh& cm = cut.mesh();
+  std::vector<TetCorners> pieces{p}, next, above, below;
+  for (const int f : cut.triangles_meeting(p)) {
+    const Eigen::Vector3d n = cut.unit_normal(f), c = cm.points.row(cm.triangles(f, 0)).transpose();
+    next.clear();
+    for (const TetCorners& q : pieces) {
+      above.clear();
+      below.clear();
+      split_by_plane(q, c, n, tolerance, above, below);
+      // Only a triangle that passes through the piece splits it (its plane may cross pieces the
+      // triangle itself misses, e.g. beyond a fold).
+      if (above.empty() || below.empty() || !cut.triangle_meets(f, q)) {
+        next.push_back(q);
+        continue;
+      }
+      for (const auto& t : above) next.push_back(t);
+      for (const auto& t : below) next.push_back(t);
+    }
+    pieces.swap(next);
+    if (pieces.size() > 100000)
+      throw Error("splitting a tet along the cut: more than 100000 pieces (the cut has too many triangles inside one element)");
+  }
+  CutPieces out;
+  for (const TetCorners& q : pieces) {
+    const double v = volume(q);
+    if (!(v > 1e-14 * whole)) continue;
+    const Eigen::Vector3d centroid = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+    const int s = cut.side(centroid);
+    out.tets.push_back(q);
+    out.side.push_back(s);
+    (s > 0 ? out.volume_above : out.volume_below) += v;
+  }
+  return out;
+}
+
+}  // namespace xfem
