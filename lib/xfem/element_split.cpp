@@ -95,6 +95,13 @@ struct Splitter {
         if (den == 0.0) continue;  // the edge lies in the triangle's plane: not a crossing
         best = std::min(best, std::clamp(n.dot(p0 - pa) / den, 0.0, 1.0));
       }
+      // Sides that differ although the segment misses the cut: an end point was put on the cut
+      // by the round-off rule D1 (docs/CLASSIFICATION.md) while lying a hair off it. The cut
+      // passes through that end point.
+      if (best > 1.0) {
+        const double da = tree_.squared_distance(to_cgal(pa)), db = tree_.squared_distance(to_cgal(pb));
+        if (std::min(da, db) <= 1e-12 * d.squaredNorm()) best = da <= db ? 0.0 : 1.0;
+      }
       if (best <= 1.0) {
         best = std::clamp(best, kEdgeClamp, 1.0 - kEdgeClamp);
         result = static_cast<int>(edge_points_.size());
