@@ -157,8 +157,8 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     append_tet_rule(q, front, n, side, out, level + 1);
   };
   // Bisection pays only when the Gauss rule itself is accurate: the depth grows with the order
-  // (order 3, the default: 2 levels at the front, none away from it; order 7 and up: 8 and 8).
-  const int max_near = std::min(kMaxLevels, 2 * (n - 2)), max_far = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
+  // (order 3, the default: 1 level at the front, none away from it; order 7 and up: 8 and 8).
+  const int max_near = std::min(kMaxLevels, (n - 2) * (n - 2)), max_far = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
   const bool may_split = level < max_near;
   int best = 0;
   if (!front.empty()) {

@@ -64,7 +64,7 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 /// face opposite a vertex rule's vertex, the whole tet otherwise), the integrand is nearly singular
 /// and Gauss rules converge slowly: the tet is bisected at that part's longest edge, recursively
 /// (front within one length of a part with a vertex on the front, within half the longest edge of
-/// a tet without one; at most min(8, 2(n-2)) levels for a part with a vertex on the front,
+/// a tet without one; at most min(8, (n-2)^2) levels for a part with a vertex on the front,
 /// min(8, 2(n-3)) otherwise: deep bisection pays only for accurate rules), and each half gets its
 /// own rule. Appends n^3 points per
 /// final tet with `side`.
