@@ -112,6 +112,26 @@ int main(int argc, char** argv) {
   disc->add_option("--radius", radius, "radius, m (default 0.03)");
   disc->add_option("--rings", rings, "concentric rings of 6, 12, 18, ... points: 6 rings^2 triangles (default 8)");
 
+  double zz_z0 = 0.1, zz_amplitude = 0.02;
+  std::array<double, 2> zz_lo{-0.01, -0.01}, zz_hi{0.04, 0.07};
+  int folds = 3;
+  auto* zigzag = command(app, "cut-zigzag", "folded sheet: piecewise planar zig-zag z = f(x), fold lines along y, "
+                                            "normal +z; the defaults cut the paper's beam through, outside it on all sides",
+                         "cut-zigzag --folds 3 --amplitude 0.02 --z0 0.1 --lo -0.01 -0.01 --hi 0.04 0.07 -o zigzag.vtp", out);
+  zigzag->add_option("--lo", zz_lo, "x, y of the rectangle's low corner, m (default -0.01 -0.01)");
+  zigzag->add_option("--hi", zz_hi, "x, y of the rectangle's high corner, m (default 0.04 0.07)");
+  zigzag->add_option("--z0", zz_z0, "mean height z0, m (default 0.1)");
+  zigzag->add_option("--amplitude", zz_amplitude, "half the height difference between neighbouring folds, m: z = z0 - A "
+                                                  "at x = lo, then z0 + A, z0 - A, ... at the folds (default 0.02)");
+  zigzag->add_option("--folds", folds, "fold lines, equally spaced in x (default 3: four flat strips)");
+  zigzag->add_option("--divisions", divisions, "quads along y per strip (default 1)")->expected(1);
+
+  std::vector<std::string> merge_inputs;
+  auto* merge = command(app, "cut-merge", "several cut surfaces as one file (e.g. two disjoint pieces), each piece "
+                                          "keeping its orientation; arrays are dropped",
+                        "cut-merge upper.vtp lower.vtp -o two_pieces.vtp", out);
+  merge->add_option("inputs", merge_inputs, "cut surfaces (.vtp/.vtk/.stl/.obj/.off)")->required()->expected(2, -1);
+
   return xfem::cli::run(*tool, argc, argv, [&] {
     if (box->parsed()) {
       const Eigen::Vector3i n(cells[0], cells[1], cells[2]);
@@ -137,6 +157,16 @@ int main(int argc, char** argv) {
                 out);
     } else if (disc->parsed()) {
       write_cut(xfem::cut_disc(vec(center), vec(normal), radius, rings), out);
+    } else if (zigzag->parsed()) {
+      write_cut(xfem::cut_zigzag({zz_lo[0], zz_lo[1]}, {zz_hi[0], zz_hi[1]}, zz_z0, zz_amplitude, folds, divisions[0]), out);
+    } else if (merge->parsed()) {
+      std::vector<xfem::TriangleMesh> pieces;
+      for (const auto& in : merge_inputs) {
+        std::vector<std::string> warnings;
+        pieces.push_back(xfem::read_triangle_mesh(in, &warnings));
+        for (const auto& w : warnings) xfem::cli::warn(w);
+      }
+      write_cut(xfem::merge_surfaces(pieces), out);
     }
   });
 }

@@ -125,6 +125,40 @@ TriangleMesh cut_disc(const Eigen::Vector3d& centre, const Eigen::Vector3d& norm
   return m;
 }
 
+TriangleMesh cut_zigzag(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double z0, double amplitude, int folds,
+                        int divisions) {
+  if (folds < 0) throw Error("zig-zag cut: folds must be 0 or more (got " + std::to_string(folds) + ")");
+  check_divisions({folds + 1, divisions}, "zig-zag cut");
+  if (!((hi.array() > lo.array()).all())) throw Error("zig-zag cut: empty rectangle (hi must exceed lo in x and y)");
+  const int n0 = folds + 1, n1 = divisions;
+  TriangleMesh m;
+  m.points.resize(static_cast<Eigen::Index>(n0 + 1) * (n1 + 1), 3);
+  for (int j = 0; j <= n1; ++j)
+    for (int i = 0; i <= n0; ++i) {
+      // x and z depend on i only, so the points of one fold line agree bit for bit.
+      const double x = i == n0 ? hi(0) : lo(0) + (hi(0) - lo(0)) * i / n0;
+      const double y = j == n1 ? hi(1) : lo(1) + (hi(1) - lo(1)) * j / n1;
+      m.points.row(i + (n0 + 1) * j) << x, y, i % 2 == 0 ? z0 - amplitude : z0 + amplitude;
+    }
+  m.triangles = grid_triangles(n0, n1);  // a graph over (x, y): normals with positive z
+  return m;
+}
+
+TriangleMesh merge_surfaces(const std::vector<TriangleMesh>& pieces) {
+  Eigen::Index np = 0, nt = 0;
+  for (const auto& p : pieces) np += p.points.rows(), nt += p.triangles.rows();
+  TriangleMesh m;
+  m.points.resize(np, 3);
+  m.triangles.resize(nt, 3);
+  np = nt = 0;
+  for (const auto& p : pieces) {
+    m.points.middleRows(np, p.points.rows()) = p.points;
+    m.triangles.middleRows(nt, p.triangles.rows()) = p.triangles.array() + static_cast<int>(np);
+    np += p.points.rows(), nt += p.triangles.rows();
+  }
+  return m;
+}
+
 double surface_area(const TriangleMesh& mesh) {
   double area = 0;
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {

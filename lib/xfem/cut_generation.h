@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <vector>
+
 #include "xfem/mesh.h"
 
 namespace xfem {
@@ -37,6 +39,22 @@ TriangleMesh cut_sine(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, doub
 /// 6 rings-gon inscribed in the circle (area 3 rings radius^2 sin(2 pi / (6 rings))).
 /// Throws xfem::Error for rings < 1, radius <= 0 or a zero normal.
 TriangleMesh cut_disc(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, double radius, int rings);
+
+/// A folded (zig-zag) sheet: piecewise planar, z = f(x) over x in [lo(0), hi(0)], y in
+/// [lo(1), hi(1)], with `folds` straight fold lines running along y (across a beam's width).
+/// The folds + 1 flat strips have equal x widths w = (hi(0) - lo(0)) / (folds + 1); the sheet's
+/// height is z0 - amplitude at x = lo(0) and alternates z0 + amplitude, z0 - amplitude, ... at
+/// the fold lines x_i = lo(0) + i w (i = 1..folds) and at x = hi(0). Each strip is split along y
+/// into `divisions` quads of two triangles: (folds + 2)(divisions + 1) points, 2 (folds + 1)
+/// divisions triangles, normal pointing to +z. Points on a fold line share its x and z bit for
+/// bit, so every strip is exactly planar. Area (hi(1) - lo(1)) (folds + 1) sqrt(w^2 + 4 A^2).
+/// Metres. Throws xfem::Error for folds < 0, divisions < 1 or an empty rectangle.
+TriangleMesh cut_zigzag(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double z0, double amplitude, int folds,
+                        int divisions);
+
+/// Several cut surfaces as one (e.g. two disjoint pieces): the points and triangles of each in
+/// turn, triangle indices shifted; each piece keeps its own orientation.
+TriangleMesh merge_surfaces(const std::vector<TriangleMesh>& pieces);
 
 /// Total area of a triangle mesh, m^2.
 double surface_area(const TriangleMesh& mesh);

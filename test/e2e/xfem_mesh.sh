@@ -63,6 +63,24 @@ run_twice rect4.vtp cut-rect --corner 0 0 0.1 --edge1 0.03 0 0 --edge2 0 0.06 0 
 run_twice sine.vtp cut-sine
 run_twice disc.vtp cut-disc --rings 4
 
+# cut-zigzag and cut-merge: help, bad input, determinism, counts (the default zig-zag: 4 strips of
+# 0.0125 x 0.08 m rising or falling 0.04 m: area 4 * 0.08 * sqrt(0.0125^2 + 0.04^2) = 0.01341).
+for c in cut-zigzag cut-merge; do
+  check 0 "$c --help" "$M" "$c" --help
+  grep -q "Example:" out.txt || { echo "FAIL: $c --help shows no example"; fail=1; }
+done
+expect_error "negative folds" bad.vtp "$M" cut-zigzag --folds -1 -o bad.vtp
+expect_error "empty zig-zag" bad.vtp "$M" cut-zigzag --lo 1 0 --hi 0 1 -o bad.vtp
+expect_error "missing merge input" bad.vtp "$M" cut-merge a_rect.vtp nothing.vtp -o bad.vtp
+grep -q "nothing.vtp" err.txt || { echo "FAIL: missing merge input not named"; cat err.txt; fail=1; }
+check 2 "cut-merge of one file" "$M" cut-merge a_rect.vtp -o bad.vtp
+run_twice zigzag.vtp cut-zigzag --folds 5 --divisions 3
+run_twice merged.vtp cut-merge a_rect.vtp a_disc.vtp
+"$M" cut-zigzag -o zz.vtp 2>err.txt
+grep -q "8 triangles, area 0.01341" err.txt || { echo "FAIL: zig-zag count/area"; cat err.txt; fail=1; }
+"$M" cut-merge a_rect.vtp a_disc.vtp -o merged.vtp 2>err.txt
+grep -q "98 triangles" err.txt || { echo "FAIL: merged count"; cat err.txt; fail=1; }
+
 # Counts: the pipelines' invocations; the 2x4x14 grid by hand: 3*5*15 = 225 nodes + 5 copies, 6*2*4*14 tets.
 "$M" unstructured-box --hi 0.03 0.06 0.2 --size 0.006 -o beam.vtu 2>err.txt || { echo "FAIL: beam"; fail=1; }
 grep -q "tets" err.txt || { echo "FAIL: no tet count on stderr"; cat err.txt; fail=1; }

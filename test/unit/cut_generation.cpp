@@ -132,3 +132,75 @@ TEST_CASE("cut_generation: cuts are the same bit for bit each time and survive a
   CHECK(r.points == a.points);
   CHECK(r.triangles == a.triangles);
 }
+
+TEST_CASE("cut_generation: the zig-zag sheet has flat strips, straight folds along y and the right area",
+          "[cut_generation]") {
+  const Eigen::Vector2d lo(-0.13, -0.1), hi(1.07, 1.1);
+  const double z0 = 0.47, A = 0.13;
+  const int folds = 3, divisions = 2;
+  const xfem::TriangleMesh m = xfem::cut_zigzag(lo, hi, z0, A, folds, divisions);
+  const int n0 = folds + 1;
+  CHECK(m.points.rows() == (n0 + 1) * (divisions + 1));
+  CHECK(m.triangles.rows() == 2 * n0 * divisions);
+  check_oriented(m, Eigen::Vector3d::UnitZ());
+  // Each strip: width w in x, rises or falls by 2A: area (hi_y - lo_y) sqrt(w^2 + 4 A^2).
+  const double w = (hi(0) - lo(0)) / n0;
+  CHECK_THAT(xfem::surface_area(m), Catch::WithinRel((hi(1) - lo(1)) * n0 * std::sqrt(w * w + 4 * A * A), 1e-12));
+  // Fold line i (column i of the point grid): one x and one z bit for bit, z alternating
+  // z0 - A (i even) and z0 + A (i odd), all y from lo to hi.
+  for (int i = 0; i <= n0; ++i) {
+    INFO("fold column " << i);
+    CHECK_THAT(m.points(i, 0), Catch::WithinAbs(lo(0) + i * w, 1e-15));
+    for (int j = 0; j <= divisions; ++j) {
+      CHECK(m.points(i + (n0 + 1) * j, 0) == m.points(i, 0));
+      CHECK(m.points(i + (n0 + 1) * j, 2) == (i % 2 == 0 ? z0 - A : z0 + A));
+    }
+    CHECK(m.points(i, 1) == lo(1));
+    CHECK(m.points(i + (n0 + 1) * divisions, 1) == hi(1));
+  }
+  // Every triangle lies in its strip's plane: unit normal (-s, 0, 1) / |.|, s = +-2A/w, the sign
+  // alternating from strip to strip (so the folds are real folds, not flat).
+  for (int f = 0; f < m.triangles.rows(); ++f) {
+    const int strip = (f / 2) % n0;
+    const double s = (strip % 2 == 0 ? 2 : -2) * A / w;
+    INFO("triangle " << f << ", strip " << strip);
+    CHECK((normal(m, f).normalized() - Eigen::Vector3d(-s, 0, 1).normalized()).norm() < 1e-14);
+  }
+  // The boundary runs round the rectangle: 2 n0 + 2 divisions edges in one triangle each.
+  std::map<std::pair<int, int>, int> edges;
+  for (int f = 0; f < m.triangles.rows(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      int a = m.triangles(f, e), b = m.triangles(f, (e + 1) % 3);
+      ++edges[{std::min(a, b), std::max(a, b)}];
+    }
+  int boundary = 0;
+  for (const auto& [e, k] : edges) boundary += k == 1;
+  CHECK(boundary == 2 * n0 + 2 * divisions);
+  // No folds: one flat strip sloping from z0 - A to z0 + A.
+  CHECK(xfem::cut_zigzag(lo, hi, z0, A, 0, 1).triangles.rows() == 2);
+  CHECK_THROWS_WITH(xfem::cut_zigzag(lo, hi, z0, A, -1, 1), Catch::Contains("folds must be 0 or more"));
+  CHECK_THROWS_WITH(xfem::cut_zigzag(lo, hi, z0, A, 2, 0), Catch::Contains("at least 1"));
+  CHECK_THROWS_WITH(xfem::cut_zigzag(hi, lo, z0, A, 2, 1), Catch::Contains("empty rectangle"));
+}
+
+TEST_CASE("cut_generation: merged surfaces keep every piece's points, triangles and orientation", "[cut_generation]") {
+  const xfem::TriangleMesh a = xfem::cut_parallelogram({-0.1, -0.1, 0.3}, {1.1, -0.1, 0.3}, {-0.1, 1.1, 0.3}, {2, 1});
+  // Normal -z: edges swapped.
+  const xfem::TriangleMesh b = xfem::cut_parallelogram({-0.1, -0.1, 0.7}, {-0.1, 1.1, 0.7}, {1.1, -0.1, 0.7}, {1, 1});
+  const xfem::TriangleMesh m = xfem::merge_surfaces({a, b});
+  REQUIRE(m.points.rows() == a.points.rows() + b.points.rows());
+  REQUIRE(m.triangles.rows() == a.triangles.rows() + b.triangles.rows());
+  CHECK_THAT(xfem::surface_area(m), Catch::WithinRel(xfem::surface_area(a) + xfem::surface_area(b), 1e-15));
+  for (int f = 0; f < m.triangles.rows(); ++f) {
+    INFO("triangle " << f);
+    CHECK(normal(m, f).z() * (f < a.triangles.rows() ? 1 : -1) > 0);
+  }
+  CHECK(m.points.topRows(a.points.rows()) == a.points);
+  CHECK(m.points.bottomRows(b.points.rows()) == b.points);
+  // Two pieces with opposite normals pass the reader's checks unchanged (orientation is per piece).
+  xfem::TriangleMesh copy = m;
+  std::vector<std::string> warnings;
+  xfem::validate_triangle_mesh(copy, "cut", &warnings);
+  CHECK(warnings.empty());
+  CHECK(copy.triangles == m.triangles);
+}
