@@ -235,7 +235,11 @@ std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, co
         if (s0 > s1) continue;
         // Positive length: longer than the tolerance band the clipping added at each end.
         const double tolerance = 4 * eps / std::max(1e-300, (lb - la).cwiseAbs().maxCoeff());
-        const char kind = (s1 - s0) * length > 1e-9 * length + tolerance * length ? 2 : 1;
+        // Through the inside (2), or only along a face, an edge or a point of the tet (1): a front
+        // lying on a face ends a cut that separates the tet behind it.
+        const Eigen::Vector4d mid = bary(fs.p0 + 0.5 * (s0 + s1) * (fs.p1 - fs.p0));
+        const bool inside = mid.minCoeff() > 1e-9;
+        const char kind = (s1 - s0) * length > 1e-9 * length + tolerance * length && inside ? 2 : 1;
         contact[t] = std::max(contact[t], kind);
         if (contact[t] == 2) break;
       }
@@ -348,8 +352,7 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
   if (options.progress) options.progress(0.92);
 
   // 5. The tets the cut separates: split along the cut (cut_pieces.h), exact volumes per side.
-  //    Completely cut = not partially cut, meets the cut, and has nodes on both sides or volume on
-  //    both sides (a fold inside the tet).
+  //    Completely cut = not partially cut, meets the cut, and separated (below).
   std::vector<double> above(T, 0.0), below(T, 0.0);
   parallel_for(T, [&](long b, long e) {
     for (long t = b; t < e; ++t) {
@@ -363,11 +366,16 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       const CutPieces pieces = split_by_cut(p, cut);
       above[t] = pieces.volume_above;
       below[t] = pieces.volume_below;
-      bool both_sides = false;
-      for (int k = 1; k < 4; ++k) both_sides = both_sides || c.side[mesh.tets(t, k)] != c.side[mesh.tets(t, 0)];
-      const double whole = pieces.volume_above + pieces.volume_below;
-      if (both_sides || (pieces.volume_above > 1e-12 * whole && pieces.volume_below > 1e-12 * whole))
-        c.cut_class[t] = CutClass::Complete;
+      // Separated: some node's sign function lives in the tet (volume on the side opposite to the
+      // node's own: across the cut, or below a node lying on it, which has side +1). A tet the
+      // front only touches (all its nodes branch enriched) counts as separated only with volume
+      // on both sides: ahead of a front lying on its face, H jumps across the cut's extension,
+      // which is no cut.
+      bool opposite = false;
+      for (int k = 0; k < 4; ++k)
+        opposite = opposite || (c.side[mesh.tets(t, k)] > 0 ? pieces.volume_below : pieces.volume_above) > 0;
+      const bool both = pieces.volume_above > 0 && pieces.volume_below > 0;
+      if (contact[t] == 1 ? both : opposite) c.cut_class[t] = CutClass::Complete;
     }
   });
 

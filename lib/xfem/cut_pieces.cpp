@@ -78,9 +78,38 @@ void split_by_plane(const TetCorners& p, const Eigen::Vector3d& point, const Eig
   add_prism(x0, x1, x2, p[rest[0]], p[rest[1]], p[rest[2]], rest_out);
 }
 
+std::vector<Eigen::Vector3d> clip_triangle(const TetCorners& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                           const Eigen::Vector3d& c) {
+  std::vector<Eigen::Vector3d> poly{a, b, c}, next;
+  static const int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  for (int k = 0; k < 4 && !poly.empty(); ++k) {
+    // Keep the side of face k where the opposite corner k lies (Sutherland-Hodgman).
+    const Eigen::Vector3d& x0 = p[kFaces[k][0]];
+    Eigen::Vector3d n = (p[kFaces[k][1]] - x0).cross(p[kFaces[k][2]] - x0);
+    if (n.dot(p[k] - x0) < 0) n = -n;
+    next.clear();
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Eigen::Vector3d& u = poly[i];
+      const Eigen::Vector3d& v = poly[(i + 1) % poly.size()];
+      const double du = n.dot(u - x0), dv = n.dot(v - x0);
+      if (du >= 0) next.push_back(u);
+      if ((du >= 0) != (dv >= 0)) next.push_back(u + du / (du - dv) * (v - u));
+    }
+    poly.swap(next);
+  }
+  return poly;
+}
+
+double polygon_area(const std::vector<Eigen::Vector3d>& polygon) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) sum += (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
+  return 0.5 * sum.norm();
+}
+
 CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut) {
   const double whole = volume(p);
   const double tolerance = 1e-12 * longest_edge(p);
+  const double area_tolerance = 1e-10 * longest_edge(p) * longest_edge(p);
   const TriangleMesh& cm = cut.mesh();
   std::vector<TetCorners> pieces{p}, next, above, below;
   for (const int f : cut.triangles_meeting(p)) {
@@ -90,9 +119,13 @@ CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut) {
       above.clear();
       below.clear();
       split_by_plane(q, c, n, tolerance, above, below);
-      // Only a triangle that passes through the piece splits it (its plane may cross pieces the
-      // triangle itself misses, e.g. beyond a fold).
-      if (above.empty() || below.empty() || !cut.triangle_meets(f, q)) {
+      // Only a triangle that passes through the inside of the piece splits it (its plane may cross
+      // pieces the triangle misses, e.g. beyond a fold, or only touches along a face: a cut
+      // ending exactly on a face).
+      if (above.empty() || below.empty() ||
+          !(polygon_area(clip_triangle(q, cm.points.row(cm.triangles(f, 0)).transpose(),
+                                       cm.points.row(cm.triangles(f, 1)).transpose(),
+                                       cm.points.row(cm.triangles(f, 2)).transpose())) > area_tolerance)) {
         next.push_back(q);
         continue;
       }

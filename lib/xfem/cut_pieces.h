@@ -18,6 +18,13 @@ struct CutPieces {
   double volume_below = 0.0;     ///< m^3, sum over the pieces with side -1
 };
 
+/// The part of triangle (a, b, c) inside the closed tet p, as a convex polygon (empty if none).
+std::vector<Eigen::Vector3d> clip_triangle(const TetCorners& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                           const Eigen::Vector3d& c);
+
+/// Area of a planar convex polygon.
+double polygon_area(const std::vector<Eigen::Vector3d>& polygon);
+
 /// Splits the tet p along the cut: every cut triangle that passes through the inside of a piece
 /// splits that piece by its plane (the marching-tetrahedra cases: a tet and a prism, two prisms, or
 /// with corners on the plane a tet and a pyramid, two tets), so that in the end no cut triangle

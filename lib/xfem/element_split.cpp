@@ -320,7 +320,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
       for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (s.node(v[i]) - s.node(v[j])).norm());
 
     // An element the cut separates but not in one plane (a fold inside it): its exact pieces
-    // (cut_pieces.h) with their faces on the cut as the wound. Their points are the element's own.
+    // (cut_pieces.h), the wound being the cut triangles clipped to it. Their points are its own.
     if (cut_class[t] == 2 && (closed || !any_split)) {
       if (!cut_surface) cut_surface = std::make_unique<CutSurface>(cut);
       TetCorners corners;
@@ -344,23 +344,25 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
           std::array<int, 4> ids4;
           for (int c = 0; c < 4; ++c) ids4[c] = id_of(q[c], sd);
           add_tet(ids4, t, sd);
-          for (int skip = 0; skip < 4; ++skip) {  // faces on the cut, oriented out of the piece
-            std::array<int, 3> f;
-            int n = 0;
-            for (int c = 0; c < 4; ++c)
-              if (c != skip) f[n++] = c;
-            const Eigen::Vector3d a = q[f[0]], b = q[f[1]], d = q[f[2]];
-            const Eigen::Vector3d normal = (b - a).cross(d - a);
-            if (normal.norm() <= kDegenerate * parent_edge * parent_edge) continue;
-            const double tolerance = 1e-9 * parent_edge;
-            if (cut_surface->closest((a + b + d) / 3).distance > tolerance || cut_surface->closest(a).distance > tolerance ||
-                cut_surface->closest(b).distance > tolerance || cut_surface->closest(d).distance > tolerance)
-              continue;
-            std::array<int, 3> w = {ids4[f[0]], ids4[f[1]], ids4[f[2]]};
-            if (normal.dot(q[skip] - a) > 0) std::swap(w[1], w[2]);
-            wound.push_back(w);
-            out.wound_side.push_back(sd);
-          }
+        }
+        // The wound: the cut's triangles clipped to the element, once per side, each oriented out
+        // of its side's pieces (towards the other side).
+        const TriangleMesh& cm = cut_surface->mesh();
+        for (const int f : cut_surface->triangles_meeting(corners)) {
+          const std::vector<Eigen::Vector3d> polygon =
+              clip_triangle(corners, cm.points.row(cm.triangles(f, 0)).transpose(),
+                            cm.points.row(cm.triangles(f, 1)).transpose(), cm.points.row(cm.triangles(f, 2)).transpose());
+          if (!(polygon_area(polygon) > kDegenerate * parent_edge * parent_edge)) continue;
+          const Eigen::Vector3d n = cut_surface->unit_normal(f);
+          for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+            for (int sd : {1, -1}) {
+              std::array<int, 3> w = {id_of(polygon[0], sd), id_of(polygon[i], sd), id_of(polygon[i + 1], sd)};
+              const Eigen::Vector3d normal = (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
+              if (normal.norm() <= kDegenerate * parent_edge * parent_edge) continue;
+              if (sd * normal.dot(n) > 0) std::swap(w[1], w[2]);
+              wound.push_back(w);
+              out.wound_side.push_back(sd);
+            }
         }
         ++out.split_complete;
         continue;

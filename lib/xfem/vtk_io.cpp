@@ -11,7 +11,6 @@
 #include <vtkIntArray.h>
 #include <vtkLogger.h>
 #include <vtkLongLongArray.h>
-#include <vtkOBJReader.h>
 #include <vtkObject.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
@@ -28,6 +27,7 @@
 #include <vtkXMLWriter.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
 #include <cctype>
 #include <cstdint>
@@ -423,13 +423,16 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
 
 namespace {
 
-TriangleMesh read_off(const std::string& path) {
+// OFF and OBJ through CGAL, in double precision (VTK's OBJ reader stores float: a cut through mesh
+// nodes would move by 1e-8 and miss them).
+TriangleMesh read_off(const std::string& path, bool obj = false) {
   std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::ifstream in(path);
   // verbose(false): CGAL would otherwise explain its failure on std::cerr.
-  if (!CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false)))
-    throw Error(path + ": not a readable OFF file");
+  if (!(obj ? CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false))
+            : CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false))))
+    throw Error(path + (obj ? ": not a readable OBJ file" : ": not a readable OFF file"));
   TriangleMesh mesh;
   mesh.points.resize(points.size(), 3);
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -633,10 +636,7 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
       update_or_throw(reader.Get(), messages, path, what);
       mesh = from_polydata(reader->GetOutput(), path);
     } else if (ext == ".obj") {
-      auto reader = Ptr<vtkOBJReader>::New();
-      reader->SetFileName(path.c_str());
-      update_or_throw(reader.Get(), messages, path, what);
-      mesh = from_polydata(reader->GetOutput(), path);
+      mesh = read_off(path, true);
     } else if (ext == ".off") {
       mesh = read_off(path);
     } else {

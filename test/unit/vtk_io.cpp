@@ -452,7 +452,7 @@ TEST_CASE("vtk_io: a file that is not the format its extension says is one error
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/garbage.stl"); }) ==
         dir + "/garbage.stl: not an STL file (neither ASCII 'solid ...' nor binary with a matching triangle count)");
   const std::string obj = error_of([&] { xfem::read_triangle_mesh(dir + "/garbage.obj"); });
-  CHECK_THAT(obj, Catch::StartsWith(dir + "/garbage.obj: cannot read triangle surface: Line longer than"));
+  CHECK(obj == dir + "/garbage.obj: not a readable OBJ file");
   CHECK(std::all_of(obj.begin(), obj.end(), [](char c) { return c >= 0x20 && c < 0x7f; }));  // printable
   CHECK(obj.size() < dir.size() + 300);
 
@@ -588,7 +588,7 @@ TEST_CASE("vtk_io: a non-triangle surface cell is an error naming the first one"
   const auto dir = scratch_dir("non_triangle");
   write_text(dir + "/q.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 2 5 3\nf 1 2 3 4\n");
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/q.obj"); }) ==
-        dir + "/q.obj: cell 1 is a vtkQuad (VTK type 9), expected triangles only (VTK type 5)");
+        dir + "/q.obj: face 1 has 4 vertices, expected triangles only");
   write_text(dir + "/q.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/q.off"); }) ==
         dir + "/q.off: face 0 has 4 vertices, expected triangles only");
