@@ -85,11 +85,13 @@ Eigen::Matrix3d RigidMotion::gradient() const {
 
 Eigen::Vector3d ExactField::displacement(const Eigen::Vector3d& x, int side) const {
   if (kind == Kind::Williams) return williams.displacement(x, side);
+  if (kind == Kind::Linear) return linear_translation + linear_gradient * x;
   return side < 0 ? below.displacement(x) : above.displacement(x);
 }
 
 Eigen::Matrix3d ExactField::gradient(const Eigen::Vector3d& x, int side) const {
   if (kind == Kind::Williams) return williams.gradient(x, side);
+  if (kind == Kind::Linear) return linear_gradient;
   return side < 0 ? below.gradient() : above.gradient();
 }
 

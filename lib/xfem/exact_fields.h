@@ -56,13 +56,17 @@ struct RigidMotion {
 };
 
 /// An exact displacement field for verification (docs/FORMATS.md "Exact fields"): a Williams
-/// near-tip field, or a rigid motion per piece of a body that a cut separates completely (the
-/// piece above the cut, H = +1, on the normal's side, and the piece below, H = -1).
+/// near-tip field, a rigid motion per piece of a body that a cut separates completely (the
+/// piece above the cut, H = +1, on the normal's side, and the piece below, H = -1), or one
+/// linear field u = t + G x on both sides (exact with a cut whose faces the stress leaves
+/// traction-free, e.g. uniaxial tension along the cut's plane; the caller chooses G so).
 struct ExactField {
-  enum class Kind { Williams, Rigid };
+  enum class Kind { Williams, Rigid, Linear };
   Kind kind = Kind::Williams;
   WilliamsField williams;
   RigidMotion above, below;  ///< Rigid: the motion of each piece
+  Eigen::Matrix3d linear_gradient = Eigen::Matrix3d::Zero();     ///< Linear: G, du_i/dx_j
+  Eigen::Vector3d linear_translation = Eigen::Vector3d::Zero();  ///< Linear: t, m
 
   /// u(x) on `side` (+1 / -1) of the cut. Williams: side matters only on the cut face (see
   /// WilliamsField); Rigid: side picks the piece (0 is taken as +1, the convention D1 of

@@ -113,8 +113,8 @@ RigidMotion parse_rigid_motion(const Node& n) {
 }
 
 ExactField parse_exact(const Node& n, const std::optional<std::pair<double, double>>& material) {
-  n.require_object({"williams", "rigid"});
-  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid");
+  n.require_object({"williams", "rigid", "linear"});
+  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid, linear");
   ExactField f;
   if (n.has("williams")) {
     const Node w = n.at("williams");
@@ -132,6 +132,14 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     W.E = w.has("E") ? w.at("E").number() : material->first;
     W.nu = w.has("nu") ? w.at("nu").number() : material->second;
     check_material(w, W.E, W.nu);
+  } else if (n.has("linear")) {
+    const Node l = n.at("linear");
+    l.require_object({"gradient", "translation"});
+    f.kind = ExactField::Kind::Linear;
+    const Node g = l.at("gradient");
+    if (g.array_size() != 3) g.fail("must be a list of 3 rows of 3 numbers");
+    for (std::size_t i = 0; i < 3; ++i) f.linear_gradient.row(static_cast<Eigen::Index>(i)) = g.at(i).vector3().transpose();
+    if (l.has("translation")) f.linear_translation = l.at("translation").vector3();
   } else {
     const Node r = n.at("rigid");
     r.require_object({"above", "below"});

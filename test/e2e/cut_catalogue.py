@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: MIT
 """Helpers of test/e2e/cut_catalogue.sh (python3 standard library only).
 
-  problem BOX_LO BOX_HI -o problem.json --exact exact.json [--same]
-      problem.json: E = 1, nu = 0.3, every node on the box's six faces gets the rigid motion of
-      its side (above / below, two different small rotations and translations; --same: one motion
-      for both sides, for cuts whose front lies inside the body); exact.json: the same field for
-      xfem-rmserror --exact.
+  problem BOX_LO BOX_HI -o problem.json --exact exact.json [--linear]
+      problem.json: E = 1, nu = 0.3, every node on the box's six faces gets the exact field: the
+      rigid motion of its side (above / below, two different small rotations and translations), or
+      with --linear uniaxial tension along x (for horizontal cuts whose front lies inside the body);
+      exact.json: the same field for xfem-rmserror --exact.
   cut MESH.vtu --through node|edge|face|front-on-face -o cut.obj
       a planar cut on an unstructured mesh through a node, containing an interior edge (not its
       faces), containing an interior face, or ending on an interior face (front inside it); the
@@ -256,9 +256,18 @@ def rigid(m, x):
     return add(tuple(m["translation"]), cross(tuple(m["rotation"]), sub(x, tuple(m["centre"]))))
 
 
+# Uniaxial tension along x (E = 1, nu = 0.3): sigma = diag(1e-3, 0, 0) leaves every cut with
+# normal z traction-free, so it is exact for a horizontal cut ending inside the body.
+LINEAR = {"gradient": [[1e-3, 0, 0], [0, -3e-4, 0], [0, 0, -3e-4]], "translation": [0.01, -0.02, 0.005]}
+
+
+def linear(field, x):
+    return add(tuple(field["translation"]), tuple(dot(tuple(r), x) for r in field["gradient"]))
+
+
 def cmd_problem(args):
     lo, hi = args.box[:3], args.box[3:]
-    field = {"rigid": {"above": ABOVE, "below": ABOVE if args.same else BELOW}}
+    field = {"linear": LINEAR} if args.linear else {"rigid": {"above": ABOVE, "below": BELOW}}
     eps = 1e-9 * max(h - l for l, h in zip(lo, hi))
     conditions = []
     for axis in range(3):
@@ -268,7 +277,7 @@ def cmd_problem(args):
             blo[axis], bhi[axis] = at - eps, at + eps
             conditions.append({"name": f"{'xyz'[axis]} {name} face",
                                "selector": {"box": {"lo": blo, "hi": bhi}}, "exact": field})
-    problem = {"description": "discontinuous patch test: every outer face moved rigidly, each side of the cut by its own motion",
+    problem = {"description": "patch test: every outer face moved by the exact field (rigid: each side of the cut by its own motion)",
                "material": {"E": 1.0, "nu": 0.3}, "dirichlet": conditions}
     json.dump(problem, open(args.output, "w"), indent=1)
     json.dump(field, open(args.exact, "w"), indent=1)
@@ -360,8 +369,8 @@ def cmd_cut(args):
         write_obj(args.output, cp, ct, (0, 0, 1 if n[2] > 0 else -1))
         return
     # front-on-face: a near-vertical interior face; the front is the horizontal line through its
-    # centroid in its plane, the cut the half-plane from there along the face's normal (a
-    # horizontal plane's half), ending inside the body.
+    # centroid in its plane, the cut a horizontal square of side 0.12 size from there along the
+    # face's normal, inside the body.
     f = max(faces, key=lambda f: score(f, False))
     p = [pts[i] for i in f]
     g = mul(1 / 3, add(add(p[0], p[1]), p[2]))
@@ -373,9 +382,9 @@ def cmd_cut(args):
     # The half-plane ends at the front through g, so the cut lies on the side of e. The plane
     # through g spanned by d and e is horizontal: z = g_z (exact), the front in the face's plane
     # up to rounding.
-    big = 3 * size
-    c = [add(g, mul(-big, d)), add(g, mul(big, d)), add(add(g, mul(big, d)), mul(big, e)),
-         add(add(g, mul(-big, d)), mul(big, e))]
+    half = 0.06 * size
+    c = [add(g, mul(-half, d)), add(g, mul(half, d)), add(add(g, mul(half, d)), mul(2 * half, e)),
+         add(add(g, mul(-half, d)), mul(2 * half, e))]
     c = [(q[0], q[1], g[2]) for q in c]
     write_obj(args.output, c, [(0, 1, 2), (0, 2, 3)], (0, 0, 1))
 
@@ -491,23 +500,33 @@ def cmd_check(args):
     # Patch test: nodal displacement and strain exact.
     if args.rms:
         r = json.load(open(args.rms))
-        field = json.load(open(args.exact))["rigid"]
+        exact = json.load(open(args.exact))
         corners = [(x, y, z) for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
-        umax = max(norm(rigid(m, x)) for m in field.values() for x in corners)
-        grad = max(norm(tuple(m["rotation"])) for m in field.values()) + \
-            norm(sub(tuple(field["above"]["translation"]), tuple(field["below"]["translation"]))) / math.sqrt(box_volume ** (2 / 3))
+        size = box_volume ** (1 / 3)
+        if "rigid" in exact:
+            field = exact["rigid"]
+            umax = max(norm(rigid(m, x)) for m in field.values() for x in corners)
+            grad = max(norm(tuple(m["rotation"])) for m in field.values()) + \
+                norm(sub(tuple(field["above"]["translation"]), tuple(field["below"]["translation"]))) / size
+            eps = [0.0] * 6
+        else:
+            G = exact["linear"]["gradient"]
+            umax = max(norm(linear(exact["linear"], x)) for x in corners)
+            grad = math.sqrt(sum(v * v for row in G for v in row))
+            eps = [G[0][0], G[1][1], G[2][2], (G[0][1] + G[1][0]) / 2, (G[1][2] + G[2][1]) / 2, (G[0][2] + G[2][0]) / 2]
         if not r["max"] <= 1e-10 * umax:
             fail(f"nodal displacement error {r['max']:.3g} m at node {r.get('max_node')} > 1e-10 x max|u| = {1e-10 * umax:.3g}")
         if not r["max_strain_error"] <= 1e-10 * grad:
             fail(f"xfem-rmserror max_strain_error {r['max_strain_error']:.3g} > {1e-10 * grad:.3g}")
         if r.get("max_gap_error", -1) > 1e-10 * umax:
             fail(f"xfem-rmserror max_gap_error {r['max_gap_error']:.3g} m > {1e-10 * umax:.3g}")
-        strain = d["cell"]["strain"]
-        worst = max(range(len(strain)), key=lambda i: sum(v * v for v in strain[i][:3]) + 2 * sum(v * v for v in strain[i][3:]))
-        e = math.sqrt(sum(v * v for v in strain[worst][:3]) + 2 * sum(v * v for v in strain[worst][3:]))
-        if not e <= 1e-10 * grad:
-            fail(f"deformed.vtu strain {e:.3g} in cell {worst} (parent tet {int(d['cell']['parent'][worst])}, "
-                 f"side {side[worst]}) > {1e-10 * grad:.3g}: zero strain expected in every tet")
+        # Strain error per cell (Frobenius norm of the tensor; components xx yy zz xy yz xz).
+        error = [math.sqrt(sum((a - b) ** 2 for a, b in zip(s[:3], eps[:3])) + 2 * sum((a - b) ** 2 for a, b in zip(s[3:], eps[3:])))
+                 for s in d["cell"]["strain"]]
+        worst = max(range(len(error)), key=lambda i: error[i])
+        if not error[worst] <= 1e-10 * grad:
+            fail(f"deformed.vtu strain error {error[worst]:.3g} in cell {worst} (parent tet {int(d['cell']['parent'][worst])}, "
+                 f"side {side[worst]}) > {1e-10 * grad:.3g}: the exact (constant) strain expected in every cell")
     for f in failures:
         print(f)
     print(f"volumes: side -1 {vol[-1]:.15g}, +1 {vol[1]:.15g}, whole cells {vol[0]:.15g}; cut area in body {area:.15g}",
@@ -522,7 +541,7 @@ def main():
     p.add_argument("box", type=float, nargs=6)
     p.add_argument("-o", "--output", required=True)
     p.add_argument("--exact", required=True)
-    p.add_argument("--same", action="store_true")
+    p.add_argument("--linear", action="store_true")
     p = sp.add_parser("cut")
     p.add_argument("mesh")
     p.add_argument("--through", choices=["node", "edge", "face", "front-on-face"], required=True)

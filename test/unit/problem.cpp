@@ -167,3 +167,22 @@ TEST_CASE("problem: exact Dirichlet fields parse, taking E and nu from the mater
   j["dirichlet"][0]["value"] = {0, 0, 0};
   CHECK_THAT(error_of(j), Catch::Contains("one of value, exact, not both"));
 }
+
+TEST_CASE("problem: a linear exact field parses and gives t + G x on both sides", "[problem]") {
+  xfem::Json j = beam();
+  j["dirichlet"][0] = xfem::Json::parse(R"({"selector": {"box": {"lo": [0, 0, 0], "hi": [1, 1, 1]}},
+      "exact": {"linear": {"gradient": [[1e-3, 0, 0], [0, -3e-4, 2e-4], [0, 0, -3e-4]], "translation": [1, 2, 3]}}})");
+  const xfem::Problem p = xfem::parse_problem(j, "problem.json");
+  REQUIRE(p.dirichlet[0].exact);
+  const xfem::ExactField& f = *p.dirichlet[0].exact;
+  CHECK(f.kind == xfem::ExactField::Kind::Linear);
+  const Eigen::Vector3d x(0.5, -1, 2);
+  // 1 + 5e-4, 2 + 3e-4 + 4e-4, 3 - 6e-4: exact up to rounding of the decimal inputs.
+  CHECK((f.displacement(x, +1) - Eigen::Vector3d(1.0005, 2.0007, 2.9994)).norm() < 1e-15);
+  CHECK(f.displacement(x, -1) == f.displacement(x, +1));
+  CHECK(f.gradient(x, -1)(1, 2) == 2e-4);
+  j["dirichlet"][0]["exact"] = xfem::Json::parse(R"({"linear": {"gradient": [[1, 0, 0], [0, 1, 0]]}})");
+  CHECK_THAT(error_of(j), Catch::Contains("dirichlet[0].exact.linear.gradient must be a list of 3 rows"));
+  j["dirichlet"][0]["exact"] = xfem::Json::parse(R"({"linear": {"gradient": [[1, 0, 0], [0, 1, 0], [0, 0]]}})");
+  CHECK_THAT(error_of(j), Catch::Contains("must be a list of 3 numbers"));
+}
