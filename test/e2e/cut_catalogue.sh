@@ -17,10 +17,13 @@
 # failures are printed, and the suite stays green; a listed case that passes fails the suite
 # (remove it from the list). CATALOGUE_CASES="s-zigzag u-disc" runs only those.
 set -u
-# Failing with the code of issue 14's start (the report of each is printed when the test runs).
+# Failing with the current code: the cuts whose front lies inside the body under uniaxial tension
+# (the linear field is reproduced to ~1e-5 of the displacement, not 1e-10: partially cut tets are
+# split by a fan from a point on the front, exact only for a straight front inside one plane, and
+# the branch functions' integrals are Gauss-approximated; the wound of partially cut tets follows
+# that fan). Every case that cuts the body through passes every check.
 # CATALOGUE_KNOWN_FAIL="" runs every case as a real test.
-KNOWN_FAIL="${CATALOGUE_KNOWN_FAIL-s-nodes u-nodes s-faces u-faces s-edge u-edge s-zigzag u-zigzag s-zigzag-dense u-zigzag-dense
-  s-sine u-sine s-disc u-disc s-face-end u-face-end u-two-pieces s-touching u-touching s-miss u-miss}"
+KNOWN_FAIL="${CATALOGUE_KNOWN_FAIL-s-disc u-disc s-face-end u-face-end}"
 KNOWN_FAIL=$(echo $KNOWN_FAIL)
 S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
 B=$XFEM_BIN; PY="python3 $XFEM_SOURCE/test/e2e/cut_catalogue.py"
