@@ -7,7 +7,9 @@ summaries on stderr. Three commands:
       on a structured grid not aligned to the cut, cg: CG-FEM on a cut-aligned grid), each holding
       rms.json (xfem-rmserror), solve.json (xfem-solve) and classify.json (xfem-classify --summary).
       With --reference, column `resolved` says whether the RMS is at least 3 times the reference's
-      own error estimate (the RMS between its two finest levels). --rms: the name of the RMS report
+      own error estimate (the RMS between its two finest levels), and column `opening_error` the
+      relative error of the run's crack opening at mid-width against the opening extrapolated from
+      the reference's three levels (Richardson), a measure free of the reference's own error. --rms: the name of the RMS report
       in each run directory (default rms.json). Stderr: the fitted rate of each
       family (least squares of log RMS against log unknowns) and, for each X-FEM run, the CG-FEM
       RMS at the same number of unknowns (interpolated on log-log axes) and their ratio.
@@ -111,7 +113,11 @@ def reference_estimate(path):
         fail("%s: needs at least two reference levels" % path)
     level_rms = float(rows[-2]["rms_vs_finest_m"])
     richardson_rms = float(rows[-1]["richardson_error_m"]) if rows[-1]["richardson_error_m"] else None
-    return level_rms, richardson_rms
+    # The crack opening's limit from the three finest levels (h = the cube edge along z).
+    last = rows[-3:]
+    opening_limit, _ = richardson([0.2 / int(r["level"].split("x")[2]) for r in last],
+                                  [float(r["opening_m"]) for r in last]) if len(last) == 3 else (None, None)
+    return level_rms, richardson_rms, opening_limit
 
 
 def cmd_runs(args):
@@ -126,22 +132,28 @@ def cmd_runs(args):
     for run in args:
         rms, solve, classify = load(run, rms_name), load(run, "solve.json"), load(run, "classify.json")
         method, label = family_of(run)
-        resolved = ""
+        resolved, opening_error = "", ""
         if reference:
             resolved = "yes" if rms["rms"] >= 3 * reference[0] else "no"
+            if reference[2] and os.path.exists(os.path.join(run, "probe.csv")):
+                opening_error = "%.4e" % abs(probe_values(run)["opening_m"] / reference[2] - 1)
         rows.append((method, label, classify["tets"], rms["n_vectors"], rms["n_unknowns"],
                      classify["sign"] + classify["branch"], rms["rms"], rms["relative_rms"], rms["max"],
-                     solve["setup_seconds"] + solve["solve_seconds"], resolved))
+                     solve["setup_seconds"] + solve["solve_seconds"], resolved, opening_error))
     rows.sort(key=lambda r: (ORDER.get(r[0], 9), r[4]))
-    print("method,mesh,tets,n_vectors,unknowns,enriched_nodes,rms_m,relative_rms,max_m,solve_s,resolved")
+    print("method,mesh,tets,n_vectors,unknowns,enriched_nodes,rms_m,relative_rms,max_m,solve_s,resolved,"
+          "opening_error")
     for r in rows:
         print(",".join([r[0], r[1], str(r[2]), str(r[3]), str(r[4]), str(r[5]),
-                        "%.6e" % r[6], "%.6e" % r[7], "%.6e" % r[8], "%.3f" % r[9], r[10]]))
+                        "%.6e" % r[6], "%.6e" % r[7], "%.6e" % r[8], "%.3f" % r[9], r[10], r[11]]))
     if reference:
         print("convergence_table: reference error estimate: RMS between its two finest levels %.3e m "
               "(resolved: RMS >= %.3e m); Richardson estimate of the finest level's own error %s"
               % (reference[0], 3 * reference[0], "%.3e m" % reference[1] if reference[1] else "n/a"),
               file=sys.stderr)
+        if reference[2]:
+            print("convergence_table: crack opening at mid-width, extrapolated from the reference levels: %.6e m"
+                  % reference[2], file=sys.stderr)
     for method in ("xfem", "xgrid", "cg"):
         pts = [(r[4], r[6]) for r in rows if r[0] == method]
         if len(pts) >= 2:
