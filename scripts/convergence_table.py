@@ -159,6 +159,14 @@ def cmd_runs(args):
         if len(pts) >= 2:
             print("convergence_table: %s: RMS ~ unknowns^%.3f (%d runs)" % (method, fitted_rate(pts), len(pts)),
                   file=sys.stderr)
+        resolved = [(r[4], r[6]) for r in rows if r[0] == method and r[10] == "yes"]
+        if reference and 2 <= len(resolved) < len(pts):
+            print("convergence_table: %s: RMS ~ unknowns^%.3f over the %d resolved runs" %
+                  (method, fitted_rate(resolved), len(resolved)), file=sys.stderr)
+        openings = [(r[4], float(r[11])) for r in rows if r[0] == method and r[11]]
+        if len(openings) >= 2:
+            print("convergence_table: %s: crack-opening error ~ unknowns^%.3f" % (method, fitted_rate(openings)),
+                  file=sys.stderr)
     cg = [(r[4], r[6]) for r in rows if r[0] == "cg"]
     for r in rows:
         if r[0] in ("xfem", "xgrid") and len(cg) >= 2:

@@ -15,10 +15,10 @@ import sys
 def read_mtx(path):
     """(rows, values) of a Matrix Market vector, coordinate or array."""
     with open(path) as f:
+        banner = f.readline()
         lines = [l for l in f if not l.startswith("%")]
-    header = lines[0].split()
-    if len(header) == 3 and len(lines) - 1 == int(header[2]) and int(header[1]) == 1 and len(lines[1].split()) == 2:
-        return {int(l.split()[0]) - 1: float(l.split()[1]) for l in lines[1:]}
+    if "coordinate" in banner:  # row col value, 1-based
+        return {int(l.split()[0]) - 1: float(l.split()[2]) for l in lines[1:]}
     return {k: float(l) for k, l in enumerate(lines[1:])}
 
 
