@@ -62,6 +62,15 @@ if [[ ${XFEM_UPDATE_GOLDEN:-0} != 1 ]]; then
   fi
 fi
 
+# Points from a .vtp (the 4 corners of a rectangle inside the beam) give the same values as the
+# same points from a CSV.
+"$B/xfem-mesh" -q cut-rect --corner 0.005 0.01 0.05 --edge1 0.01 0 0 --edge2 0 0.02 0 -o points.vtp
+printf 'x,y,z\n0.005,0.01,0.05\n0.015,0.01,0.05\n0.015,0.03,0.05\n0.005,0.03,0.05\n' > points.csv
+"$B/xfem-probe" -q cg-2x4x14/classified.vtu --solution cg-2x4x14/u.mtx --points points.vtp -o from_vtp.csv
+"$B/xfem-probe" -q cg-2x4x14/classified.vtu --solution cg-2x4x14/u.mtx --points points.csv -o from_csv.csv
+[[ $(sort from_vtp.csv | md5sum) == $(sort from_csv.csv | md5sum) ]] || {
+  echo "wellposed_golden: .vtp and .csv points give different values:" >&2; paste -d'|' from_vtp.csv from_csv.csv >&2; exit 1; }
+
 # xfem-probe's bad input: one line on stderr naming the file, exit 1, no output file.
 expect_error() {  # expected message, then the xfem-probe arguments
   local want=$1; shift
