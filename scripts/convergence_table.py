@@ -17,6 +17,10 @@ summaries on stderr. Three commands:
       One row per reference level (directories ref-NXxNYxNZ, coarse to fine, each with solve.json,
       probe.csv, and rms.json against the finest for all but the finest), and the reference's
       error estimates on stderr.
+  convergence_table.py check convergence.csv
+      Exit 1 unless every resolved X-FEM run lies below CG-FEM at equal unknowns (CG-FEM's RMS
+      interpolated on log-log axes; runs outside CG-FEM's range of unknowns are skipped), and
+      unless every run says whether it is resolved: the claim of docs/CONVERGENCE.md, checked.
   convergence_table.py limits RUN...
       Richardson extrapolation of the probed quantities (probe.csv of xfem-probe at the points of
       probes.csv, by row) per family, from its three finest runs.
@@ -237,8 +241,33 @@ def cmd_limits(runs):
                   "no extrapolation"), file=sys.stderr)
 
 
+def cmd_check(args):
+    if len(args) != 1:
+        fail("usage: convergence_table.py check convergence.csv")
+    with open(args[0]) as f:
+        rows = list(csv.DictReader(f))
+    cg = sorted((int(r["unknowns"]), float(r["rms_m"])) for r in rows if r["method"] == "cg")
+    checked, bad = 0, []
+    for r in rows:
+        if r["resolved"] not in ("yes", "no"):
+            bad.append("%s %s: no `resolved` verdict" % (r["method"], r["mesh"]))
+        if r["method"] not in ("xfem", "xgrid") or r["resolved"] != "yes":
+            continue
+        at = loglog_interpolate(cg, int(r["unknowns"]))
+        if at is None:
+            continue
+        checked += 1
+        if not float(r["rms_m"]) < at:
+            bad.append("%s %s: RMS %s at %s unknowns, CG-FEM %.3e" % (r["method"], r["mesh"], r["rms_m"],
+                                                                     r["unknowns"], at))
+    if bad or checked == 0:
+        fail("%s: X-FEM is not below CG-FEM at every resolved size: %s" % (args[0], "; ".join(bad) or "no run checked"))
+    print("convergence_table: %s: X-FEM below CG-FEM at all %d resolved sizes within CG-FEM's range" %
+          (args[0], checked), file=sys.stderr)
+
+
 if __name__ == "__main__":
-    commands = {"runs": cmd_runs, "reference": cmd_reference, "limits": cmd_limits}
+    commands = {"runs": cmd_runs, "reference": cmd_reference, "limits": cmd_limits, "check": cmd_check}
     if len(sys.argv) < 2 or sys.argv[1] not in commands:
-        fail("usage: convergence_table.py runs|reference|limits DIR... (see the docstring)")
+        fail("usage: convergence_table.py runs|reference|limits|check ... (see the docstring)")
     commands[sys.argv[1]](sys.argv[2:])
