@@ -12,11 +12,14 @@
 namespace {
 using Field = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-std::string write_file(const std::string& name, const std::string& text) {
-  const std::string path = "point_probe_test_" + name;
-  std::ofstream(path) << text;
-  return path;
-}
+// A file with `text`, removed when the object goes (at the end of the full expression).
+struct TempFile {
+  std::string path;
+  TempFile(const std::string& name, const std::string& text) : path("point_probe_test_" + name) {
+    std::ofstream(path) << text;
+  }
+  ~TempFile() { std::remove(path.c_str()); }
+};
 
 Eigen::Vector3d linear(const Eigen::Vector3d& x) {
   return Eigen::Vector3d(0.1 + 2 * x[0] - x[2], 3 * x[1], -0.5 * x[0] + x[1] + 4 * x[2]);
@@ -33,29 +36,31 @@ std::string message_of(const std::string& path) {
 }  // namespace
 
 TEST_CASE("point_probe: CSV points with and without sides, comments skipped", "[point_probe]") {
-  const auto p = xfem::read_probe_points(write_file("a.csv", "# a comment\nx,y,z,side\n0,0.03,0.1,1\n 1e-3 , 2, 3 ,-1\n"));
+  const auto p =
+      xfem::read_probe_points(TempFile("a.csv", "# a comment\nx,y,z,side\n0,0.03,0.1,1\n 1e-3 , 2, 3 ,-1\n").path);
   REQUIRE(p.size() == 2);
   CHECK(p[0].x == Eigen::Vector3d(0, 0.03, 0.1));
   CHECK(p[0].side == 1);
   CHECK(p[1].x == Eigen::Vector3d(1e-3, 2, 3));
   CHECK(p[1].side == -1);
-  const auto q = xfem::read_probe_points(write_file("b.csv", "x,y,z\n1,2,3\n"));
+  const auto q = xfem::read_probe_points(TempFile("b.csv", "x,y,z\n1,2,3\n").path);
   REQUIRE(q.size() == 1);
   CHECK(q[0].side == 0);
 }
 
 TEST_CASE("point_probe: bad CSV input is refused with the line", "[point_probe]") {
-  CHECK(message_of(write_file("h.csv", "a,b,c\n1,2,3\n")).find("line 1: the header must be x,y,z") != std::string::npos);
-  CHECK(message_of(write_file("n.csv", "x,y,z\n1,abc,3\n")).find("line 2: 'abc' is not a finite number") !=
+  CHECK(message_of(TempFile("h.csv", "a,b,c\n1,2,3\n").path).find("line 1: the header must be x,y,z") !=
         std::string::npos);
-  CHECK(message_of(write_file("i.csv", "x,y,z\n1,inf,3\n")).find("line 2: 'inf' is not a finite number") !=
+  CHECK(message_of(TempFile("n.csv", "x,y,z\n1,abc,3\n").path).find("line 2: 'abc' is not a finite number") !=
         std::string::npos);
-  CHECK(message_of(write_file("s.csv", "x,y,z,side\n1,2,3,2\n")).find("line 2: side must be -1, 0 or 1") !=
+  CHECK(message_of(TempFile("i.csv", "x,y,z\n1,inf,3\n").path).find("line 2: 'inf' is not a finite number") !=
         std::string::npos);
-  CHECK(message_of(write_file("c.csv", "x,y,z,side\n1,2,3\n")).find("line 2: 3 values, expected 4") !=
+  CHECK(message_of(TempFile("s.csv", "x,y,z,side\n1,2,3,2\n").path).find("line 2: side must be -1, 0 or 1") !=
         std::string::npos);
-  CHECK(message_of(write_file("e.csv", "x,y,z\n")).find("no point to probe") != std::string::npos);
-  CHECK(message_of(write_file("z.csv", "")).find("no header line") != std::string::npos);
+  CHECK(message_of(TempFile("c.csv", "x,y,z,side\n1,2,3\n").path).find("line 2: 3 values, expected 4") !=
+        std::string::npos);
+  CHECK(message_of(TempFile("e.csv", "x,y,z\n").path).find("no point to probe") != std::string::npos);
+  CHECK(message_of(TempFile("z.csv", "").path).find("no header line") != std::string::npos);
   CHECK(message_of("point_probe_test_missing.csv").find("point_probe_test_missing.csv") != std::string::npos);
 }
 
