@@ -31,7 +31,7 @@ bad negative_e 's/"E": 300e3/"E": -1/';      expect_error "material.E must be po
 bad nu 's/"nu": 0.35/"nu": 0.5/';            expect_error "material.nu must lie in (-1, 0.5), got 0.5" "$S/nu.json"
 bad unknown 's/"dirichlet"/"dirichlett"/'; expect_error "unknown key 'dirichlett'" "$S/unknown.json"
 bad empty 's/"point": \[0, 0, 0.199\]/"point": [0, 0, 0.2]/'
-expect_error "empty.json: dirichlet[1] ('pulled edge z >= 0.199, x <= 0.001') selects no node" "$S/empty.json"
+expect_error "empty.json: dirichlet[1] ('pulled edge z > 0.199, x < 0.001') selects no node" "$S/empty.json"
 expect_error "cannot open" "$S/no_such_problem.json"
 rm -rf "$S/bad"
 "$ASSEMBLE" "$S/no_such.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/bad" 2>"$S/err.txt"

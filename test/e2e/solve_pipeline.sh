@@ -23,7 +23,7 @@ res=$(json_number relative_residual "$S/solve.json")
 awk -v r="$res" 'BEGIN{exit !(r < 1e-10)}' || fail "CHOLMOD residual $res >= 1e-10"
 
 # The boundary nodes found from the coordinates (not from dirichlet.mtx): pulled edge
-# z >= 0.199 and x <= 0.001 (7 nodes), fixed face z <= 0.001 (28 nodes); values compared exactly.
+# z > 0.199 and x < 0.001 (7 nodes), fixed face z < 0.001 (28 nodes); values compared exactly.
 check_bc() {  # check_bc <u.mtx>
   paste <(tail -n +3 "$S/sys/coordinates.mtx" | paste - - -) <(tail -n +3 "$1" | head -n 1764 | paste - - -) |
     awk '{x=$1; z=$3; ux=$4; uy=$5; uz=$6}

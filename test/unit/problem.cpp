@@ -54,7 +54,7 @@ TEST_CASE("problem: the paper's beam problem parses", "[problem]") {
 TEST_CASE("problem: selectors pick nodes by half-spaces (strict), boxes (closed) and point arrays", "[problem]") {
   xfem::TetMesh m = xfem::box_mesh({3, 3, 4}, {0, 0, 0}, {0.03, 0.06, 0.2});
   const xfem::Problem p = xfem::parse_problem(beam(), "problem.json");
-  // z <= 0.001: the 16 nodes of the face z = 0; z >= 0.199 and x <= 0.001: the 4 of the edge.
+  // z < 0.001: the 16 nodes of the face z = 0; z > 0.199 and x < 0.001: the 4 of the edge.
   CHECK(xfem::select_nodes(p.dirichlet[0].selector, m, "fixed").size() == 16);
   const auto edge = xfem::select_nodes(p.dirichlet[1].selector, m, "pulled");
   REQUIRE(edge.size() == 4);
