@@ -9,6 +9,7 @@
 #include "xfem/enriched_mesh.h"
 #include "xfem/linear_system.h"
 #include "xfem/problem.h"
+#include "xfem/reactions.h"
 #include "xfem/version.h"
 
 namespace {
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
       "(closed form for plain tets; tets with enriched DOFs split exactly along the cut, Gauss rules\n"
       "collapsed onto the cut front where crack-tip functions live), loads on the\n"
       "original DOFs, and the Dirichlet data of problem.json (docs/FORMATS.md). Writes the system/\n"
-      "directory xfem-solve reads: K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx, system.json.",
+      "directory xfem-solve reads: K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx, system.json,\ndirichlet_conditions.json. Units SI: metres, pascals, newtons.",
       "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json -o out/system");
   std::string input, cut_path, problem_path, output;
   int points = 0, refine = -1, order = 0;
@@ -81,6 +82,8 @@ int main(int argc, char** argv) {
     xfem::AssemblyStats s;
     const xfem::LinearSystem system = xfem::assemble_system(em, problem, points, refine, &s, xfem::cli::progress("assembling"));
     const double write_start = xfem::cli::now();
+    // Which condition fixes which DOF: xfem-solve sums the reaction forces per condition.
+    xfem::write_dirichlet_groups(xfem::dirichlet_groups(em.mesh, problem), output, std::string("xfem-assemble ") + xfem::version);
     xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version);
     const double write = xfem::cli::now() - write_start;
 

@@ -9,6 +9,7 @@
 #include "xfem/error.h"
 #include "xfem/linear_system.h"
 #include "xfem/petsc_solver.h"
+#include "xfem/reactions.h"
 #include "xfem/version.h"
 
 namespace {
@@ -36,18 +37,22 @@ int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(
       "xfem-solve",
       "Solves K u = f of an xfem-assemble system directory with its Dirichlet conditions (eliminated, K stays SPD).\n"
-      "Writes the full solution (3N values: original, sign and branch DOFs; constrained DOFs at their values).",
+      "Writes the full solution (3N values in metres: original, sign and branch DOFs; constrained DOFs at their\n"
+      "values) and reports the reaction force (N) and moment (N m, about the origin) of each Dirichlet condition.",
       "xfem-solve out/system -o out/u.mtx --report out/solve.json\n"
       "  mpirun -np 2 xfem-solve out/system -o out/u.mtx --backend petsc --rtol 1e-8");
-  std::string dir, output, report_path, backend = "cholmod", ordering = "metis", near_null = "rigid",
+  std::string dir, output, report_path, reactions_path, backend = "cholmod", ordering = "metis", near_null = "rigid",
               enriched_block = "auto";
   double rtol = 1e-10, drop_tol = 0;
   int max_iterations = 10000;
   auto& app = tool->app;
   app.add_option("system", dir, "system directory written by xfem-assemble (K.mtx, f.mtx, dirichlet.mtx, system.json)")
       ->required();
-  app.add_option("-o,--output", output, "solution vector u (Matrix Market, 3N x 1)")->required();
-  app.add_option("--report", report_path, "JSON report (sizes, backend, timings, residual)");
+  app.add_option("-o,--output", output, "solution vector u (Matrix Market, 3N x 1, m)")->required();
+  app.add_option("--report", report_path, "JSON report (sizes, backend, timings, residual, reaction forces in N and "
+                                         "moments in N m per Dirichlet condition)");
+  app.add_option("--reactions", reactions_path, "also write the nodal reactions r = K u - f (Matrix Market, 3N x 1, N; "
+                                                "non-zero on constrained DOFs only) for xfem-visualize --reactions");
   app.add_option("--backend", backend, "cholmod (direct, default) or petsc (CG + GAMG; run under mpirun for MPI)")
       ->check(CLI::IsMember({"cholmod", "petsc"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
@@ -168,7 +173,11 @@ int main(int argc, char** argv) {
     if (!(residual <= limit))
       throw xfem::Error("the solution is inaccurate (relative residual " + g(residual) +
                         "): K is numerically singular; no output written");
+    const xfem::Reactions reactions = xfem::reactions(dir, s, u);  // r = K u - f on the constrained DOFs
+    for (const auto& r : reactions.conditions) info(xfem::describe_reaction(r, reactions.moments));
+    report["reactions"] = xfem::reactions_json(reactions.conditions, reactions.applied, reactions.moments);
     if (root) {
+      if (!reactions_path.empty()) xfem::write_vector(reactions.r, reactions_path);
       xfem::write_vector(u, output);
       if (!report_path.empty()) xfem::write_json(report, report_path);
     }

@@ -9,7 +9,9 @@
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
 #include "xfem/matrix_market.h"
+#include "xfem/paraview_script.h"
 #include "xfem/problem.h"
+#include "xfem/reactions.h"
 #include "xfem/snapshot.h"
 #include "xfem/vtk_io.h"
 
@@ -18,29 +20,36 @@ int main(int argc, char** argv) {
       "xfem-visualize",
       "Write the deformed body with the cut opened: every cut element split along the cut into its\n"
       "parts above and below (ahead of the cut front it stays joined), each part moved by the X-FEM\n"
-      "displacement of its own side; with strain, stress and von Mises stress per cell\n"
-      "(docs/FORMATS.md: deformed.vtu, wound.vtp, PNG snapshot). Positions are undeformed: apply\n"
-      "ParaView's Warp By Vector with 'displacement' to see the deformation.",
+      "displacement of its own side; with strain, stress (Pa) and von Mises stress (Pa) per cell\n"
+      "(docs/FORMATS.md: deformed.vtu, wound.vtp, PNG snapshot). Positions are undeformed (m): apply\n"
+      "ParaView's Warp By Vector with 'displacement' (m) to see the deformation. Without --cut the mesh\n"
+      "is shown as it is (plain CG-FEM meshes, doubled nodes included).",
       "xvfb-run -a xfem-visualize enriched.vtu --cut cut.vtp --solution u.mtx --problem problem.json \\\n"
-      "      -o deformed.vtu --faces wound.vtp --png beam.png --scale 2");
-  std::string input, cut_path, solution, problem_path, output, faces, png, title;
+      "      -o deformed.vtu --faces wound.vtp --png beam.png --scale 2 --reactions r.mtx --paraview deformed.py");
+  std::string input, cut_path, solution, problem_path, output, faces, png, title, reactions_path, script, edges = "auto";
   double scale = 1.0;
   int width = 1200, height = 900;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtk/.stl/.obj/.off)")
-      ->required();
-  app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
-  app.add_option("-p,--problem", problem_path, "problem.json (material E, nu for the stresses)")->required();
+  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtk/.stl/.obj/.off); "
+                                       "omit for a mesh without enriched DOFs");
+  app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, for the stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
   app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp)");
+  app.add_option("--reactions", reactions_path, "xfem-solve --reactions output (3N x 1, N): written as the point "
+                                                "array 'reaction' of the output");
   app.add_option("--png", png, "also render a picture (needs an X display: run under xvfb-run -a)");
-  app.add_option("--scale", scale, "displacement magnification in the picture only (files keep the true "
-                                   "displacement)")->check(CLI::PositiveNumber);
+  app.add_option("--paraview", script, "also write a ParaView Python script (.py) that opens the output warped by "
+                                       "--scale and coloured like the picture (paraview --script=FILE)");
+  app.add_option("--scale", scale, "displacement magnification in the picture and script only, dimensionless "
+                                   "(files keep the true displacement)")->check(CLI::PositiveNumber);
   app.add_option("--width", width, "picture width, pixels")->check(CLI::Range(64, 8192));
   app.add_option("--height", height, "picture height, pixels")->check(CLI::Range(64, 8192));
+  app.add_option("--edges", edges, "element edges in the picture: auto (light grey below 20,000 visible faces, "
+                                   "default), on or off")->check(CLI::IsMember({"auto", "on", "off"}));
   bool no_edges = false;
-  app.add_flag("--no-edges", no_edges, "picture without element edges (clearer for fine meshes)");
+  app.add_flag("--no-edges", no_edges, "same as --edges off");
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
   return xfem::cli::run(*tool, argc, argv, [&] {
     if (!png.empty() && !std::getenv("DISPLAY"))
@@ -49,12 +58,24 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
+    if (cut_path.empty() && em.n > em.np)
+      throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
+                        " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
     const Eigen::VectorXd u = xfem::read_vector(solution);
     if (u.size() != 3 * em.n)
       throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
                         std::to_string(3 * em.n) + " for " + input);
+    Eigen::VectorXd reactions;
+    if (!reactions_path.empty()) {
+      reactions = xfem::read_vector(reactions_path);
+      if (reactions.size() != 3 * em.n)
+        throw xfem::Error(reactions_path + ": " + std::to_string(reactions.size()) + " values, expected 3N = " +
+                          std::to_string(3 * em.n) + " for " + input);
+    }
 
-    const xfem::SplitMesh split = xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
+    const xfem::SplitMesh split =
+        cut_path.empty() ? xfem::unsplit_mesh(em.mesh, em.side)
+                         : xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +
                     std::to_string(split.split_partial) + " split behind the front: " +
                     std::to_string(split.tets.rows()) + " tets, " + std::to_string(split.points.rows()) + " points, " +
@@ -62,26 +83,31 @@ int main(int argc, char** argv) {
     if (split.degenerate_faces > 0)
       xfem::cli::warn(std::to_string(split.degenerate_faces) + " faces with one split edge but no front point: "
                       "split at that edge only (the cut grazes a node or the front misses the face)");
-    const xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
-                                                        problem.nu, xfem::cli::progress("evaluating"));
-    const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),
-                                           [&](const Eigen::Vector3d& x) {
-                                             return em.cut->unit_normal(em.cut->closest(x).triangle);
-                                           });
-    xfem::cli::info("cut opening (u+ - u-) . n at " + std::to_string(opening.pairs) + " points: min " +
-                    std::to_string(opening.min_normal) + " m, mean " + std::to_string(opening.mean_normal) +
-                    " m, max " + std::to_string(opening.max_normal) + " m; max |u+ - u-| " +
-                    std::to_string(opening.max_jump) + " m");
-    if (!png.empty()) {
-      xfem::SnapshotOptions o;
-      o.scale = scale;
-      o.width = width;
-      o.height = height;
-      o.title = title.empty() ? output : title;
-      o.edges = !no_edges;
-      xfem::write_snapshot(body.volume, png, o);
+    xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
+                                                  problem.nu, xfem::cli::progress("evaluating"));
+    if (!reactions_path.empty()) body.volume.point_data["reaction"] = xfem::reaction_array(reactions, em.np, split.points.rows());
+    if (em.cut) {
+      const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),
+                                             [&](const Eigen::Vector3d& x) {
+                                               return em.cut->unit_normal(em.cut->closest(x).triangle);
+                                             });
+      xfem::cli::info("cut opening (u+ - u-) . n at " + std::to_string(opening.pairs) + " points: min " +
+                      std::to_string(opening.min_normal) + " m, mean " + std::to_string(opening.mean_normal) +
+                      " m, max " + std::to_string(opening.max_normal) + " m; max |u+ - u-| " +
+                      std::to_string(opening.max_jump) + " m");
     }
+    xfem::SnapshotOptions o;
+    o.scale = scale;
+    o.width = width;
+    o.height = height;
+    o.title = title.empty() ? output : title;
+    o.edges = no_edges || edges == "off" ? xfem::SnapshotOptions::Edges::Off
+              : edges == "on"            ? xfem::SnapshotOptions::Edges::On
+                                         : xfem::SnapshotOptions::Edges::Auto;
+    if (!png.empty()) xfem::write_snapshot(body.volume, body.wound, png, o);
     xfem::write_tet_mesh(body.volume, output);
     if (!faces.empty()) xfem::write_triangle_mesh(body.wound, faces);
+    if (!script.empty())
+      xfem::write_paraview_script(script, output, faces, xfem::cut_view(body.wound), xfem::colour_top(body.volume), scale);
   });
 }

@@ -11,6 +11,11 @@
 #include "xfem/error.h"
 
 namespace xfem {
+namespace {
+// Wound offset along its outward normal, as a fraction of the body's bounding-box diagonal: far
+// below what a picture resolves (0.02 mm on the 0.2 m beam), far above depth-buffer resolution.
+constexpr double kWoundOffset = 1e-4;
+}  // namespace
 
 DisplacementField xfem_displacement(const EnrichedMesh& em, const Eigen::VectorXd& u) {
   DisplacementField f;
@@ -79,7 +84,7 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
   v.point_data["displacement"] = disp;
   v.point_data["side"] = point_side;
   v.cell_data["cut_class"] = cls;
-  v.cell_data["side"] = side;
+  v.cell_data["piece_side"] = side;  // not "side": ParaView lists point and cell arrays by name
   v.cell_data["parent"] = parent;
   v.cell_data["strain"] = strain;
   v.cell_data["stress"] = stress;
@@ -104,6 +109,27 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
   for (std::size_t i = 0; i < used.size(); ++i) {
     w.points.row(static_cast<Eigen::Index>(i)) = split.points.row(used[i]);
     for (int c = 0; c < 3; ++c) wdisp.values[3 * i + c] = disp.values[3 * used[i] + c];
+  }
+  // Shown together with deformed.vtu, whose outer surface holds the same faces, the wound would
+  // z-fight; moved by kWoundOffset x the body's diagonal along its faces' outward normal (into the
+  // opening) it is drawn just in front of them. The area-weighted normals of a front point's two
+  // faces cancel: it stays where it is, on the front.
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(w.points.rows(), 3);
+  Eigen::VectorXd magnitude = Eigen::VectorXd::Zero(w.points.rows());
+  for (Eigen::Index f = 0; f < w.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = w.points.row(w.triangles(f, 0)), b = w.points.row(w.triangles(f, 1)),
+                          c = w.points.row(w.triangles(f, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    for (int k = 0; k < 3; ++k) {
+      normal.row(w.triangles(f, k)) += n.transpose();
+      magnitude[w.triangles(f, k)] += n.norm();
+    }
+  }
+  const double offset =
+      np > 0 ? kWoundOffset * (split.points.colwise().maxCoeff() - split.points.colwise().minCoeff()).norm() : 0;
+  for (Eigen::Index i = 0; i < w.points.rows(); ++i) {
+    const double length = normal.row(i).norm();
+    if (length > 0.5 * magnitude[i]) w.points.row(i) += offset / length * normal.row(i);
   }
   DataArray wside = make_array(DataArray::Type::Int32, 1, split.wound_side.size());
   for (std::size_t f = 0; f < split.wound_side.size(); ++f) wside.values[f] = split.wound_side[f];

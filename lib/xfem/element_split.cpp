@@ -471,4 +471,23 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
   return out;
 }
 
+SplitMesh unsplit_mesh(const TetMesh& mesh, const std::vector<int>& side) {
+  const int np = static_cast<int>(mesh.points.rows()), nt = static_cast<int>(mesh.tets.rows());
+  if (static_cast<int>(side.size()) != np)
+    throw Error("unsplit_mesh: " + std::to_string(side.size()) + " point sides for " + std::to_string(np) + " points");
+  SplitMesh out;
+  out.points = mesh.points;
+  out.point_side = side;
+  out.point_tet.assign(np, 0);
+  // Each node's field is evaluated in the first tet that holds it (a doubled node's own tets).
+  for (int t = nt - 1; t >= 0; --t)
+    for (int c = 0; c < 4; ++c) out.point_tet[mesh.tets(t, c)] = t;
+  out.tets = mesh.tets;
+  out.parent.resize(nt);
+  for (int t = 0; t < nt; ++t) out.parent[t] = t;
+  out.tet_side.assign(nt, 0);
+  out.wound.resize(0, 3);
+  return out;
+}
+
 }  // namespace xfem

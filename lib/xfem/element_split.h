@@ -53,4 +53,9 @@ struct SplitMesh {
 SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
                      const TriangleMesh& cut, const std::vector<FrontSegment>& front);
 
+/// The "split" of a mesh without a cut (a plain CG-FEM mesh, doubled nodes included): the mesh
+/// itself, every tet whole (tet_side 0), every point evaluated on `side` (+1 / -1 per point) in
+/// the first tet that uses it, no wound. Throws xfem::Error when `side` does not match the mesh.
+SplitMesh unsplit_mesh(const TetMesh& mesh, const std::vector<int>& side);
+
 }  // namespace xfem

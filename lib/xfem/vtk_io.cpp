@@ -184,6 +184,12 @@ Ptr<vtkDataArray> to_vtk_typed(const std::string& name, const DataArray& in, con
     data[i] = static_cast<T>(v);
   }
   out->SetName(name.c_str());
+  // Six components are a symmetric tensor in VTK's order (strain, stress): named, ParaView shows
+  // xx .. xz instead of 0 .. 5 (docs/FORMATS.md).
+  if (in.components == 6 && in.type == DataArray::Type::Float64) {
+    static const char* kNames[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+    for (int c = 0; c < 6; ++c) out->SetComponentName(c, kNames[c]);
+  }
   return out;
 }
 
