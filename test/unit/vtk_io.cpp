@@ -300,9 +300,9 @@ TEST_CASE("vtk_io: a non-tet cell is an error naming the first one and its VTK t
     write_text(dir + "/m.vtk", std::string("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                                            "POINTS 5 double\n") +
                                    two_tets_points +
-                                   "CELLS 3 13\n4 0 1 2 3\n3 1 2 3\n3 0 1 2\nCELL_TYPES 3\n10\n5\n5\n");
+                                   "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n9\n");  // triangles: gmsh_io.cpp
     CHECK(error_of([&] { xfem::read_tet_mesh(dir + "/m.vtk"); }) ==
-          dir + "/m.vtk: cell 1 is a vtkTriangle (VTK type 5), expected tetrahedra only (VTK type 10)");
+          dir + "/m.vtk: cell 1 is a vtkQuad (VTK type 9), expected tetrahedra only (VTK type 10)");
   }
   SECTION(".vtu") {
     write_text(dir + "/m.vtu", R"(<?xml version="1.0"?>
@@ -426,11 +426,11 @@ TEST_CASE("vtk_io: a wrong extension is an error naming the expected ones", "[vt
   CHECK(error_of([&] { xfem::read_tet_mesh(dir + "/mesh.txt"); }) ==
         dir + "/mesh.txt: unknown extension '.txt' for a tetrahedral mesh (expected .vtu or .vtk)");
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/mesh.txt"); }) ==
-        dir + "/mesh.txt: unknown extension '.txt' for a triangle surface (expected .vtp, .vtk, .stl, .obj or .off)");
+        dir + "/mesh.txt: unknown extension '.txt' for a triangle surface (expected .vtp, .vtu, .vtk, .stl, .obj, .off or .msh)");
   CHECK(error_of([&] { xfem::write_tet_mesh(one_tet(), dir + "/out.vtk"); }) ==
         dir + "/out.vtk: volume meshes are written as .vtu, not '.vtk'");
   CHECK(error_of([&] { xfem::write_triangle_mesh(square(), dir + "/out.stl"); }) ==
-        dir + "/out.stl: surfaces are written as .vtp, not '.stl'");
+        dir + "/out.stl: surfaces are written as .vtp or .vtu, not '.stl'");
   CHECK(!fs::exists(dir + "/out.vtk"));
 }
 
