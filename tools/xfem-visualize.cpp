@@ -28,12 +28,12 @@ int main(int argc, char** argv) {
   int width = 1200, height = 900;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtk/.stl/.obj/.off)")
+  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh)")
       ->required();
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E, nu for the stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
-  app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp)");
+  app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp, or .vtu: a grid of triangles)");
   app.add_option("--png", png, "also render a picture (needs an X display: run under xvfb-run -a)");
   app.add_option("--scale", scale, "displacement magnification in the picture only (files keep the true "
                                    "displacement)")->check(CLI::PositiveNumber);
