@@ -747,3 +747,23 @@ TEST_CASE("vtk_io: write and read a 500k-tet box mesh (timing for docs/PERFORMAN
   CHECK(back.tets == m.tets);
   fs::remove(path);
 }
+
+TEST_CASE("vtk_io: a surface written as .vtu (a grid of triangles) reads back with its arrays", "[vtk_io]") {
+  const auto dir = scratch_dir("surface_vtu");
+  xfem::TriangleMesh m = square();
+  m.cell_data["side"] = xfem::make_array(DataArray::Type::Int32, 1, 2, -1.0);
+  m.point_data["displacement"] = xfem::make_array(DataArray::Type::Float64, 3, 4, 0.25);
+  xfem::write_triangle_mesh(m, dir + "/surface.vtu");
+  std::ifstream in(dir + "/surface.vtu");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("<UnstructuredGrid>") != std::string::npos);
+  const xfem::TriangleMesh back = xfem::read_triangle_mesh(dir + "/surface.vtu");
+  CHECK(back.points == m.points);
+  CHECK(back.triangles == m.triangles);
+  CHECK(back.cell_data.at("side").values == m.cell_data.at("side").values);
+  CHECK(back.point_data.at("displacement").values == m.point_data.at("displacement").values);
+  // A volume mesh is not a surface: its first tet is named.
+  xfem::write_tet_mesh(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}), dir + "/box.vtu");
+  CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/box.vtu"); }) ==
+        dir + "/box.vtu: cell 0 is a vtkTetra (VTK type 10), expected triangles only (VTK type 5)");
+}
