@@ -3,6 +3,7 @@
 
 #include <gmsh.h>
 
+#include <array>
 #include <map>
 #include <mutex>
 
@@ -94,7 +95,7 @@ std::string element_name(const GmshSession& session, int type) {
   return name + " (gmsh element type " + std::to_string(type) + ")";
 }
 
-// Node rows of every element of `type`, `n` nodes each.
+// Node rows of every element of `type`, N nodes each.
 template <std::size_t N>
 std::vector<std::array<int, N>> elements(const GmshSession& session, const Nodes& nodes, int type,
                                          const std::string& path) {
