@@ -9,6 +9,7 @@ packages=(
   libopenblas0-pthread                             # fast BLAS for CHOLMOD (the reference BLAS is ~30x slower)
   libvtk9-dev                                      # mesh I/O, point location, rendering
   libpetsc-real-dev openmpi-bin                    # iterative, MPI-capable solve
+  libgmsh-dev gmsh                                 # .msh input (gmsh's library), the gmsh pipeline's mesher
   catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
   xvfb xauth gnuplot-nox python3                   # headless PNG snapshots, plots, tables
   time                                             # GNU /usr/bin/time: peak memory in bench/bench.py

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   std::string rule;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtk/.stl/.obj/.off); "
+  app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
                                        "needed when the mesh has enriched DOFs (N > NP)");
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
                                                "dirichlet, neumann, body_force)")->required();

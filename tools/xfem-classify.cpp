@@ -21,9 +21,9 @@ int main(int argc, char** argv) {
   std::string body, cut_path, output, summary;
   double tip_radius = 0.0, tiny_support = 1e-8;
   auto& app = tool->app;
-  app.add_option("body", body, "tetrahedral mesh of the body (.vtu/.vtk)")->required();
+  app.add_option("body", body, "tetrahedral mesh of the body (.vtu/.vtk, or gmsh .msh 2.2/4.x: its physical groups become point arrays group_<name>)")->required();
   app.add_option("-c,--cut", cut_path,
-                 "cut surface of triangles (.vtp/.vtk/.stl/.obj/.off); without it the mesh is plain (e.g. a "
+                 "cut surface of triangles (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); without it the mesh is plain (e.g. a "
                  "cut-aligned mesh with doubled nodes): everything uncut, no enrichment");
   app.add_option("-o,--output", output, "classified mesh (.vtu)")->required();
   app.add_option("--summary", summary, "also write the counts as JSON ('-' = stdout)");

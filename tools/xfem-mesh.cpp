@@ -20,7 +20,7 @@ Eigen::Vector2i pair(const std::vector<int>& n) { return {n[0], n.size() > 1 ? n
 CLI::App* command(CLI::App& app, const char* name, const char* what, const char* example, std::string& out) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->footer(std::string("Example:\n  xfem-mesh ") + example);
-  sub->add_option("-o,--output", out, "output file (.vtu for meshes, .vtp for cuts)")->required();
+  sub->add_option("-o,--output", out, "output file (.vtu for meshes; .vtp, or .vtu, for cuts)")->required();
   return sub;
 }
 
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
 
   auto* surf = command(app, "surface", "unstructured tet mesh of the volume inside a closed triangle surface",
                        "surface body.stl --size 0.005 -o body.vtu", out);
-  surf->add_option("input", input, "closed surface (.stl/.off/.obj/.vtp/.vtk)")->required();
+  surf->add_option("input", input, "closed surface (.stl/.off/.obj/.vtp/.vtu/.vtk/.msh)")->required();
   surf->add_option("--size", size, size_help)->required();
 
   auto* rect = command(app, "cut-rect", "planar cut: the parallelogram corner, corner+edge1, corner+edge2; normal "

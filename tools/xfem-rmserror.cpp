@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--cut", cut_path, "cut surface, required for an X-FEM solution");
   app.add_option("-s,--solution", solution, "solution vector u.mtx (default: the mesh's point array 'displacement')");
   auto* ref_option = app.add_option("-r,--reference", reference,
-                                    "reference mesh (.vtu/.vtk); point array 'cut_side' gives the side of duplicated nodes");
+                                    "reference mesh (.vtu/.vtk/.msh); point array 'cut_side' gives the side of duplicated nodes");
   auto* exact_option = app.add_option("--exact", exact_path,
                                       "exact field instead of a reference: JSON {\"williams\": {origin, ahead, normal, K1, K2, "
                                       "K3, E, nu}}, {\"rigid\": {above, below}} or {\"linear\": {gradient, translation}} "

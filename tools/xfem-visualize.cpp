@@ -31,12 +31,12 @@ int main(int argc, char** argv) {
   int width = 1200, height = 900;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtk/.stl/.obj/.off); "
+  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
                                        "omit for a mesh without enriched DOFs");
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, for the stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
-  app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp)");
+  app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp, or .vtu: a grid of triangles)");
   app.add_option("--reactions", reactions_path, "xfem-solve --reactions output (3N x 1, N): written as the point "
                                                 "array 'reaction' of the output");
   app.add_option("--png", png, "also render a picture (needs an X display: run under xvfb-run -a)");

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <initializer_list>
 
+#include "xfem/boundary_groups.h"
 #include "xfem/error.h"
 
 namespace xfem {
@@ -60,8 +61,8 @@ struct Node {
 };
 
 Selector parse_selector(const Node& n) {
-  n.require_object({"half_spaces", "box", "point_array"});
-  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array");
+  n.require_object({"half_spaces", "box", "point_array", "group"});
+  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group");
   Selector s;
   if (n.has("half_spaces")) {
     s.kind = Selector::Kind::HalfSpaces;
@@ -81,6 +82,10 @@ Selector parse_selector(const Node& n) {
     s.lo = box.at("lo").vector3();
     s.hi = box.at("hi").vector3();
     if ((s.hi.array() < s.lo.array()).any()) box.fail("is empty (hi must be >= lo in x, y and z)");
+  } else if (n.has("group")) {
+    s.kind = Selector::Kind::Group;
+    s.array = n.at("group").string();
+    if (s.array.empty()) n.at("group").fail("must name a group");
   } else {
     s.kind = Selector::Kind::PointArray;
     s.array = n.at("point_array").string();
@@ -278,6 +283,19 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
       throw Error(what + ": point array '" + s.array + "' must have 1 component per point");
     array = &it->second;
   }
+  if (s.kind == Selector::Kind::Group) {
+    const auto it = mesh.point_data.find(group_array_name(s.array));
+    if (it == mesh.point_data.end()) {
+      std::string names;
+      for (const std::string& g : group_names(mesh)) names += (names.empty() ? "'" : ", '") + g + "'";
+      throw Error(what + ": the mesh has no group '" + s.array + "' (" +
+                  (names.empty() ? std::string("it has no groups: name them as gmsh physical groups, docs/FORMATS.md")
+                                 : "its groups: " + names) + ")");
+    }
+    if (it->second.components != 1 || static_cast<Eigen::Index>(it->second.tuples()) != np)
+      throw Error(what + ": point array '" + it->first + "' must have 1 component per point");
+    array = &it->second;
+  }
   std::vector<int> nodes;
   for (Eigen::Index k = 0; k < np; ++k) {
     const Eigen::Vector3d x = mesh.points.row(k).transpose();
@@ -290,6 +308,7 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
         in = (x.array() >= s.lo.array()).all() && (x.array() <= s.hi.array()).all();
         break;
       case Selector::Kind::PointArray:
+      case Selector::Kind::Group:
         in = (*array)(k) != 0.0;
         break;
     }

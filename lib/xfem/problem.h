@@ -14,13 +14,14 @@ namespace xfem {
 
 /// Which mesh nodes a boundary condition acts on (problem.json, docs/FORMATS.md).
 struct Selector {
-  enum class Kind { HalfSpaces, Box, PointArray };
+  enum class Kind { HalfSpaces, Box, PointArray, Group };
   Kind kind = Kind::HalfSpaces;
   /// HalfSpaces: node x selected when (x - point) . normal > 0 strictly for every plane (the
   /// convention of the paper's code). Normals need not be unit vectors.
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> planes;  ///< (point, normal), metres
   Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< Box: lo <= x <= hi (closed)
-  std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero
+  std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero; Group: the group's name,
+                      ///< its nodes are where the point array group_<name> is nonzero (boundary_groups.h)
 };
 
 /// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
@@ -82,7 +83,8 @@ ExactField read_exact_field(const std::string& path);
 
 /// Ids of the nodes `selector` selects, increasing. `what` names the condition in messages, e.g.
 /// "problem.json: dirichlet[1] ('pulled edge')". Throws xfem::Error "<what> selects no node", or
-/// when a named point array is missing or has more than one component.
+/// when a named point array is missing or has more than one component, or a group is unknown
+/// ("<what>: the mesh has no group 'lid' (its groups: 'fixed', 'pulled')").
 std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.

@@ -29,6 +29,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cmath>
@@ -42,7 +43,9 @@
 #include <queue>
 
 #include "xfem/atomic_file.h"
+#include "xfem/boundary_groups.h"
 #include "xfem/error.h"
+#include "xfem/gmsh_io.h"
 
 namespace xfem {
 namespace {
@@ -338,6 +341,66 @@ void write_xml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& tar
   }
 }
 
+// Cells a mesher writes beside the tets of a volume mesh: its geometry points, edges and
+// boundary triangles. Other cell types stay errors (copy_cell names them).
+bool is_lower_dimensional(int type) {
+  return type == VTK_VERTEX || type == VTK_POLY_VERTEX || type == VTK_LINE || type == VTK_POLY_LINE ||
+         type == VTK_TRIANGLE;
+}
+
+// The cell array naming the boundary group of each triangle: "group", or meshio's
+// "gmsh:physical" (a gmsh mesh converted by meshio). Null when there is none.
+const DataArray* triangle_groups(const DataArrays& cell_data) {
+  for (const char* name : {"group", "gmsh:physical"}) {
+    const auto it = cell_data.find(name);
+    if (it != cell_data.end() && it->second.components == 1) return &it->second;
+  }
+  return nullptr;
+}
+
+// A mixed-cell grid (gmsh's VTK export, meshio's conversion): tets are the body, triangles
+// join the group their "group" cell value names, vertices and lines carry nothing.
+TetMesh read_mixed_grid(vtkUnstructuredGrid* grid, const std::string& name, std::vector<std::string>* warnings) {
+  MixedMesh mixed;
+  mixed.points = to_points(grid->GetPoints());
+  mixed.point_data = to_arrays(grid->GetPointData());
+  mixed.cell_data = to_arrays(grid->GetCellData());
+  mixed.field_data = to_arrays(grid->GetFieldData());
+  const DataArray* group = triangle_groups(mixed.cell_data);
+  const vtkIdType nc = grid->GetNumberOfCells(), np = grid->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < nc; ++i) {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    grid->GetCells()->GetCellAtId(i, npts, ids);
+    const int type = grid->GetCellType(i);
+    if (type == VTK_TRIANGLE && group) {
+      std::array<int, 3> triangle;
+      copy_cell(type, npts, ids, i, VTK_TRIANGLE, "triangles", np, name, triangle);
+      const double g = (*group)(static_cast<std::size_t>(i));
+      if (!(g == std::floor(g) && std::abs(g) < 1e9))
+        throw Error(name + ": cell " + std::to_string(i) + " has group " + std::to_string(g) + ", not an integer");
+      auto& members = mixed.groups[std::to_string(static_cast<long>(g))];
+      members.insert(members.end(), triangle.begin(), triangle.end());
+    } else if (!is_lower_dimensional(type)) {
+      std::array<int, 4> tet;
+      copy_cell(type, npts, ids, i, VTK_TETRA, "tetrahedra, triangles, lines or vertices", np, name, tet);
+      mixed.tets.push_back(tet);
+      mixed.tet_cells.push_back(static_cast<long>(i));
+    }
+  }
+  // The group's value is now a point set: its cell array would mean nothing on the tets.
+  if (group) mixed.cell_data.erase(mixed.cell_data.count("group") ? "group" : "gmsh:physical");
+  TetMesh mesh = body_of(mixed, name);
+  validate_tet_mesh(mesh, name, warnings);
+  return mesh;
+}
+
+bool has_lower_dimensional_cells(vtkUnstructuredGrid* grid) {
+  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+    if (is_lower_dimensional(grid->GetCellType(i))) return true;
+  return false;
+}
+
 }  // namespace
 
 int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::string>* warnings) {
@@ -378,11 +441,13 @@ int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::s
 }
 
 TetMesh read_tet_mesh(const std::string& path, std::vector<std::string>* warnings) {
+  if (path != "-" && extension_of(path) == ".msh") return read_gmsh_tet_mesh(path, warnings);
   const std::string name = display_name(path);
   TetMesh mesh;
   {
     VtkMessages messages;
     auto grid = read_unstructured_grid(path, messages);
+    if (has_lower_dimensional_cells(grid)) return read_mixed_grid(grid, name, warnings);
     mesh.points = to_points(grid->GetPoints());
     const vtkIdType nc = grid->GetNumberOfCells();
     const vtkIdType np = grid->GetNumberOfPoints();
@@ -519,6 +584,28 @@ void keep_cells(DataArrays& arrays, const std::vector<int>& kept) {
   }
 }
 
+// A surface as a VTK XML unstructured grid of triangles: for readers that take no .vtp (meshio).
+void write_triangle_grid(const TriangleMesh& mesh, const std::string& path) {
+  VtkMessages messages;
+  auto grid = Ptr<vtkUnstructuredGrid>::New();
+  grid->SetPoints(to_vtk(mesh.points));
+  auto offsets = Ptr<vtkIdTypeArray>::New();
+  auto connectivity = Ptr<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(mesh.triangles.rows() + 1);
+  connectivity->SetNumberOfValues(mesh.triangles.size());
+  for (Eigen::Index f = 0; f <= mesh.triangles.rows(); ++f) offsets->SetValue(f, 3 * f);
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * f + k, mesh.triangles(f, k));
+  auto cells = Ptr<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  grid->SetCells(VTK_TRIANGLE, cells);
+  add_arrays(grid->GetPointData(), mesh.point_data, mesh.points.rows(), "point", path);
+  add_arrays(grid->GetCellData(), mesh.cell_data, mesh.triangles.rows(), "cell", path);
+  write_atomically(path, [&](const std::string& tmp) {
+    write_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, tmp, path, messages);
+  });
+}
+
 }  // namespace
 
 void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::vector<std::string>* warnings) {
@@ -605,6 +692,7 @@ void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::ve
 }
 
 TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string>* warnings) {
+  if (path != "-" && extension_of(path) == ".msh") return read_gmsh_triangle_mesh(path, warnings);
   const std::string name = display_name(path);
   const char* what = "triangle surface";
   TriangleMesh mesh;
@@ -634,6 +722,8 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
         mesh = from_grid(grid, path);
       else
         throw Error(path + ": not a legacy VTK POLYDATA or UNSTRUCTURED_GRID file");
+    } else if (ext == ".vtu") {  // an unstructured grid of triangles (meshio reads and writes these)
+      mesh = from_grid(read_unstructured_grid(path, messages), path);
     } else if (ext == ".stl") {
       check_stl(path);
       auto reader = Ptr<vtkSTLReader>::New();
@@ -647,7 +737,7 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
       mesh = read_off(path);
     } else {
       throw Error(path + ": unknown extension '" + ext + "' for a " + what +
-                  " (expected .vtp, .vtk, .stl, .obj or .off)");
+                  " (expected .vtp, .vtu, .vtk, .stl, .obj, .off or .msh)");
     }
   }
   validate_triangle_mesh(mesh, name, warnings);
@@ -655,8 +745,9 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
 }
 
 void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
+  if (path != "-" && extension_of(path) == ".vtu") return write_triangle_grid(mesh, path);
   if (path != "-" && extension_of(path) != ".vtp")
-    throw Error(path + ": surfaces are written as .vtp, not '" + extension_of(path) + "'");
+    throw Error(path + ": surfaces are written as .vtp or .vtu, not '" + extension_of(path) + "'");
   const std::string name = path == "-" ? std::string("<stdout>") : path;
   VtkMessages messages;
   auto poly = Ptr<vtkPolyData>::New();

@@ -8,7 +8,10 @@
 namespace xfem {
 
 /// Reads a tetrahedral volume mesh from VTK XML `.vtu` or legacy `.vtk` (ASCII or binary) with all
-/// its point, cell and field arrays, and validates it. Throws xfem::Error naming the file and the
+/// its point, cell and field arrays, and validates it. A gmsh `.msh` goes to read_gmsh_tet_mesh.
+/// Vertices, lines and triangles beside the tets (a mesher's output) are not part of the body:
+/// triangles with a 1-component cell array "group" (or meshio's "gmsh:physical") join the named
+/// set group_<value> (boundary_groups.h); points in no tet are then dropped. Throws xfem::Error naming the file and the
 /// first problem: unreadable file, no tets, a cell that is not a tet (named with its index and VTK
 /// type), a point index out of range, a non-finite coordinate, zero-volume tets (counted).
 /// Inverted tets are reoriented (nodes 1 and 2 swapped); each fix adds a line to `warnings`.
@@ -21,8 +24,9 @@ int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::s
 /// Writes `mesh` as VTK XML `.vtu` (appended raw binary, zlib-compressed), atomically.
 void write_tet_mesh(const TetMesh& mesh, const std::string& path);
 
-/// Reads a triangulated surface (a cut) from `.vtp`, legacy `.vtk` (POLYDATA or
-/// UNSTRUCTURED_GRID of triangles), `.stl` (coincident points merged), `.obj` or `.off`, and
+/// Reads a triangulated surface (a cut) from `.vtp`, `.vtu` or legacy `.vtk` (POLYDATA or
+/// UNSTRUCTURED_GRID of triangles), `.stl` (coincident points merged), `.obj`, `.off` or gmsh
+/// `.msh` (its triangles, gmsh_io.h), and
 /// validates it: triangles only (else the first bad cell is named), indices in range, finite
 /// coordinates, no empty surface, no edge shared by more than two triangles. Zero-area triangles
 /// are dropped and triangles whose orientation disagrees with their neighbours' are flipped (the
@@ -33,7 +37,7 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
 /// Checks and repairs an in-memory surface as read_triangle_mesh does.
 void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::vector<std::string>* warnings);
 
-/// Writes `mesh` as VTK XML `.vtp`, atomically.
+/// Writes `mesh` as VTK XML `.vtp`, or `.vtu` (an unstructured grid of triangles), atomically.
 void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path);
 
 }  // namespace xfem

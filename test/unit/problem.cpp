@@ -111,7 +111,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
   }
   SECTION("two selector kinds") {
     j["dirichlet"][0]["selector"]["box"] = {{"lo", {0, 0, 0}}, {"hi", {1, 1, 1}}};
-    CHECK(error_of(j) == "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array");
+    CHECK(error_of(j) == "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array, group");
   }
   SECTION("zero normal") {
     j["dirichlet"][0]["selector"]["half_spaces"][0]["normal"] = {0, 0, 0};

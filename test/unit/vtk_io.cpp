@@ -300,9 +300,9 @@ TEST_CASE("vtk_io: a non-tet cell is an error naming the first one and its VTK t
     write_text(dir + "/m.vtk", std::string("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                                            "POINTS 5 double\n") +
                                    two_tets_points +
-                                   "CELLS 3 13\n4 0 1 2 3\n3 1 2 3\n3 0 1 2\nCELL_TYPES 3\n10\n5\n5\n");
+                                   "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n9\n");  // triangles: gmsh_io.cpp
     CHECK(error_of([&] { xfem::read_tet_mesh(dir + "/m.vtk"); }) ==
-          dir + "/m.vtk: cell 1 is a vtkTriangle (VTK type 5), expected tetrahedra only (VTK type 10)");
+          dir + "/m.vtk: cell 1 is a vtkQuad (VTK type 9), expected tetrahedra only (VTK type 10)");
   }
   SECTION(".vtu") {
     write_text(dir + "/m.vtu", R"(<?xml version="1.0"?>
@@ -426,11 +426,11 @@ TEST_CASE("vtk_io: a wrong extension is an error naming the expected ones", "[vt
   CHECK(error_of([&] { xfem::read_tet_mesh(dir + "/mesh.txt"); }) ==
         dir + "/mesh.txt: unknown extension '.txt' for a tetrahedral mesh (expected .vtu or .vtk)");
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/mesh.txt"); }) ==
-        dir + "/mesh.txt: unknown extension '.txt' for a triangle surface (expected .vtp, .vtk, .stl, .obj or .off)");
+        dir + "/mesh.txt: unknown extension '.txt' for a triangle surface (expected .vtp, .vtu, .vtk, .stl, .obj, .off or .msh)");
   CHECK(error_of([&] { xfem::write_tet_mesh(one_tet(), dir + "/out.vtk"); }) ==
         dir + "/out.vtk: volume meshes are written as .vtu, not '.vtk'");
   CHECK(error_of([&] { xfem::write_triangle_mesh(square(), dir + "/out.stl"); }) ==
-        dir + "/out.stl: surfaces are written as .vtp, not '.stl'");
+        dir + "/out.stl: surfaces are written as .vtp or .vtu, not '.stl'");
   CHECK(!fs::exists(dir + "/out.vtk"));
 }
 
@@ -746,4 +746,24 @@ TEST_CASE("vtk_io: write and read a 500k-tet box mesh (timing for docs/PERFORMAN
   CHECK(back.points == m.points);
   CHECK(back.tets == m.tets);
   fs::remove(path);
+}
+
+TEST_CASE("vtk_io: a surface written as .vtu (a grid of triangles) reads back with its arrays", "[vtk_io]") {
+  const auto dir = scratch_dir("surface_vtu");
+  xfem::TriangleMesh m = square();
+  m.cell_data["side"] = xfem::make_array(DataArray::Type::Int32, 1, 2, -1.0);
+  m.point_data["displacement"] = xfem::make_array(DataArray::Type::Float64, 3, 4, 0.25);
+  xfem::write_triangle_mesh(m, dir + "/surface.vtu");
+  std::ifstream in(dir + "/surface.vtu");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("<UnstructuredGrid>") != std::string::npos);
+  const xfem::TriangleMesh back = xfem::read_triangle_mesh(dir + "/surface.vtu");
+  CHECK(back.points == m.points);
+  CHECK(back.triangles == m.triangles);
+  CHECK(back.cell_data.at("side").values == m.cell_data.at("side").values);
+  CHECK(back.point_data.at("displacement").values == m.point_data.at("displacement").values);
+  // A volume mesh is not a surface: its first tet is named.
+  xfem::write_tet_mesh(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}), dir + "/box.vtu");
+  CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/box.vtu"); }) ==
+        dir + "/box.vtu: cell 0 is a vtkTetra (VTK type 10), expected triangles only (VTK type 5)");
 }
