@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Solves the assembled system K u = f with its Dirichlet conditions (issue 5; DESIGN.md stages).
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -75,7 +76,9 @@ bool under_mpirun() {
 // Restarts this very program under `mpirun -np P` with the same arguments (the ranks see the
 // MPI environment and do not restart again). Returns only if mpirun cannot be started.
 void restart_under_mpirun(int processes, int argc, char** argv) {
-  std::vector<std::string> args = {"mpirun", "-np", std::to_string(processes), "--oversubscribe", "--bind-to", "none"};
+  // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
+  std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(processes), "--oversubscribe",
+                                   "--bind-to", "none"};
   if (::geteuid() == 0) {  // Open MPI refuses root unless told twice
     args.push_back("--allow-run-as-root");
     ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
@@ -160,6 +163,14 @@ int main(int argc, char** argv) {
         const int wanted = processes > 0 ? processes
                                          : xfem::automatic_processes(dofs, static_cast<int>(std::thread::hardware_concurrency()));
         if (wanted > 1) {
+          // The checks a rank would fail on, here once: one error line instead of one per rank.
+          const std::string k_path = xfem::system_matrix_file(dir, xfem::system_format(dir));
+          if (xfem::system_format(dir) == xfem::SystemFormat::Petsc) {
+            const xfem::PetscMatrixHeader h = xfem::read_petsc_matrix_header(k_path);
+            if (h.rows != dofs || h.cols != dofs)
+              throw xfem::Error(k_path + ": " + std::to_string(h.rows) + " x " + std::to_string(h.cols) +
+                                ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs));
+          }
           xfem::cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
           restart_under_mpirun(wanted, argc, argv);
           xfem::cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
@@ -169,6 +180,12 @@ int main(int argc, char** argv) {
     std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
     const bool root = !mpi || mpi->rank() == 0;
+    // Failures are collective (every rank reads the same files and fails alike): rank 0 alone
+    // reports, so a bad input gives one error line, not one per rank (-v keeps them all).
+    if (!root && !tool->verbose) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      if (null >= 0) ::dup2(null, 2), ::close(null);
+    }
     const auto info = [&](const std::string& m) { if (root) xfem::cli::info(m); };
     const auto warn = [&](const std::string& m) { if (root) xfem::cli::warn(m); };
 
@@ -271,7 +288,7 @@ int main(int argc, char** argv) {
                             g(first > 0 ? norm / first : norm) + " of the first), " + g(xfem::cli::now() - t_start) +
                             " s");
         };
-      const Ticker ticker("PETSc setup + CG", root && !tool->quiet && !tool->verbose);
+      const Ticker ticker("PETSc setup + CG", root && !tool->quiet);
       const xfem::PetscResult p = xfem::petsc_solve(std::move(distributed), s, options);
       u = p.u;
       residual = p.relative_residual;

@@ -74,6 +74,12 @@ for b in $backends; do
   expect_error "inf/K.petsc:" "$S/inf" --backend $b --np 1
   grep -Eq "not finite|non-finite value" "$S/err.txt" || fail "$b: +inf in K: $(cat "$S/err.txt")"
 done
+# Through the start under mpirun: still one error line (not one per rank, no mpirun banner).
+if "$SOLVE" --version | grep -q petsc && command -v mpirun >/dev/null; then
+  expect_error "trunc/K.petsc: $((size - 5)) bytes, but its header" "$S/trunc" --np 2
+  expect_error "inf/K.petsc: K holds a non-finite value" "$S/inf" --np 2
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] || fail "--np 2: more than the error line: $(cat "$S/err.txt")"
+fi
 
 # An incomplete directory (no system.json: an interrupted xfem-assemble) is refused.
 rm -rf "$S/partial"; cp -r "$S/sys" "$S/partial"; rm "$S/partial/system.json"
