@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-iterations", max_iterations, "PETSc: CG iteration limit (default 10000)")
       ->check(CLI::PositiveNumber);
   app.add_option("--near-null-space", near_null, "PETSc: GAMG near-null space: rigid (rigid-body modes of the original "
-                                                 "DOFs, needs coordinates.mtx; default), rigid-enriched (also the "
+                                                 "DOFs, needs the coordinates in the system; default), rigid-enriched (also the "
                                                  "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
       ->check(CLI::IsMember({"rigid", "rigid-enriched", "none"}));
   app.add_option("--enriched-block", enriched_block,

@@ -297,8 +297,8 @@ PetscResult petsc_solve(PetscMatrix&& K, const LinearSystem& s, const PetscSolve
   }
   if (options.near_null_space == "rigid" || options.near_null_space == "rigid-enriched") {
     if (s.coordinates.size() == 0)
-      throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.mtx in the "
-                  "system directory); use --near-null-space none to go without");
+      throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.petsc or "
+                  "coordinates.mtx in the system directory); use --near-null-space none to go without");
     const Eigen::MatrixXd R = rigid_modes(s, options.near_null_space == "rigid-enriched" && !split);
     o.modes.resize(6, nullptr);
     for (int m = 0; m < 6; ++m) {
