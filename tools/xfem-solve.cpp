@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
   return xfem::cli::run(*tool, argc, argv, [&] {
     const bool mpi_child = under_mpirun();
     if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
-      // The choice from system.json alone (cheap), the same in every rank of a restart.
+      // The choice from the system without K (cheap), the same in every rank of a restart.
       const xfem::LinearSystem head = xfem::read_linear_system(dir, false);
       const long dofs = 3 * head.n;
       if (backend == "auto") backend = processes > 1 ? "petsc" : xfem::automatic_backend(dofs, head.n > head.np);
