@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Baseline for xfem-solve --backend petsc on one process: the same system/ directory read by the
-// same reader, the same symmetric in-place Dirichlet elimination (fixed rows and columns -> their
-// diagonal), then the bare PETSc calls: SeqAIJ with block size 3, MatNullSpaceCreateRigidBody from
-// the coordinates, KSPCG + PCGAMG, unpreconditioned residual norm. PETSC_OPTIONS apply.
-// Prints the timings on stdout as one JSON line. Usage: bare_petsc SYSTEM_DIR [RTOL]
+// Baseline for xfem-solve --backend petsc, on as many processes as it is started on (mpirun -np P):
+// the bare PETSc calls on the same system/ directory (PETSc binary format): MatLoad of K.petsc
+// (AIJ, block size 3, each rank its block of whole 3-vectors, as the tool), the Dirichlet DOFs
+// eliminated by MatZeroRowsColumns (their diagonal kept, as the tool), MatNullSpaceCreateRigidBody
+// from the coordinates, KSPCG + PCGAMG, unpreconditioned residual norm. PETSC_OPTIONS apply.
+// Prints the timings on stdout (rank 0) as one JSON line. Usage: bare_petsc SYSTEM_DIR [RTOL]
 // (the rigid-body modes need N = NP: an uncut system such as the reference beam).
 #include <petscksp.h>
 
@@ -27,66 +28,66 @@ int main(int argc, char** argv) {
   }
   const double rtol = argc > 2 ? std::atof(argv[2]) : 1e-10;
   PetscInitializeNoArguments();
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
   const auto t_start = std::chrono::steady_clock::now();
-  const xfem::LinearSystem s = xfem::read_linear_system(argv[1]);
-  const double read_seconds = since(t_start);
-  if (s.n != s.np || s.coordinates.size() == 0) {
-    std::fprintf(stderr, "bare_petsc: needs an uncut system with coordinates.mtx\n");
+  const xfem::LinearSystem s = xfem::read_linear_system(argv[1], false);  // all but K
+  if (s.n != s.np || s.coordinates.size() == 0 || xfem::system_format(argv[1]) != xfem::SystemFormat::Petsc) {
+    std::fprintf(stderr, "bare_petsc: needs an uncut system with coordinates in the PETSc binary format\n");
     return 1;
   }
+  const PetscInt n = static_cast<PetscInt>(3 * s.n), blocks = static_cast<PetscInt>(s.n);
+  const PetscInt mine = 3 * (blocks / size + (rank < blocks % size ? 1 : 0));
+  Mat A;
+  PetscViewer viewer;
+  PetscViewerBinaryOpen(PETSC_COMM_WORLD, xfem::system_matrix_file(argv[1], xfem::SystemFormat::Petsc).c_str(),
+                        FILE_MODE_READ, &viewer);
+  MatCreate(PETSC_COMM_WORLD, &A);
+  MatSetSizes(A, mine, mine, n, n);
+  MatSetType(A, MATAIJ);
+  MatSetBlockSize(A, 3);
+  MatLoad(A, viewer);
+  PetscViewerDestroy(&viewer);
+  const double read_seconds = since(t_start);
 
   const auto t_setup = std::chrono::steady_clock::now();
-  const PetscInt n = static_cast<PetscInt>(3 * s.n);
-  std::vector<char> fixed(n, 0);
-  std::vector<double> value(n, 0.0);
-  for (std::size_t k = 0; k < s.fixed.size(); ++k) fixed[s.fixed[k]] = 1, value[s.fixed[k]] = s.fixed_values[k];
-  std::vector<PetscInt> nnz(n, 1);
-  for (PetscInt d = 0; d < n; ++d)
-    if (!fixed[d]) {
-      nnz[d] = 0;
-      for (xfem::SparseMatrix::InnerIterator it(s.K, d); it; ++it) nnz[d] += !fixed[it.row()];
-    }
-  Mat A;
-  Vec x, b, coords;
-  MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), &A);
-  MatSetBlockSize(A, 3);
+  PetscInt r0 = 0, r1 = 0;
+  MatGetOwnershipRange(A, &r0, &r1);
+  Vec x, b, diag, coords;
   MatCreateVecs(A, &x, &b);
-  std::vector<PetscInt> cols;
-  std::vector<PetscScalar> vals;
-  for (PetscInt d = 0; d < n; ++d) {
-    cols.clear();
-    vals.clear();
-    double rhs = s.f[d];
-    if (fixed[d]) {
-      const double k = s.K.coeff(d, d) > 0 ? s.K.coeff(d, d) : 1.0;
-      cols.push_back(d);
-      vals.push_back(k);
-      rhs = k * value[d];
-    } else {
-      for (xfem::SparseMatrix::InnerIterator it(s.K, d); it; ++it) {
-        if (fixed[it.row()]) {
-          rhs -= it.value() * value[it.row()];
-        } else {
-          cols.push_back(static_cast<PetscInt>(it.row()));
-          vals.push_back(it.value());
-        }
-      }
+  VecDuplicate(x, &diag);
+  MatGetDiagonal(A, diag);
+  std::vector<PetscInt> rows;
+  for (std::size_t k = 0; k < s.fixed.size(); ++k)
+    if (s.fixed[k] >= r0 && s.fixed[k] < r1) {
+      rows.push_back(static_cast<PetscInt>(s.fixed[k]));
+      VecSetValue(x, static_cast<PetscInt>(s.fixed[k]), s.fixed_values[k], INSERT_VALUES);
     }
-    VecSetValue(b, d, rhs, INSERT_VALUES);
-    MatSetValues(A, 1, &d, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), INSERT_VALUES);
+  VecAssemblyBegin(x);
+  VecAssemblyEnd(x);
+  PetscScalar* bb = nullptr;
+  VecGetArray(b, &bb);
+  for (PetscInt d = r0; d < r1; ++d) bb[d - r0] = s.f[d];
+  VecRestoreArray(b, &bb);
+  MatZeroRowsColumns(A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, x, b);
+  PetscScalar* dd = nullptr;
+  VecGetArray(diag, &dd);
+  VecGetArray(b, &bb);
+  for (PetscInt d : rows) {
+    if (!(dd[d - r0] > 0)) dd[d - r0] = 1.0;
+    bb[d - r0] *= dd[d - r0];
   }
-  VecAssemblyBegin(b);
-  VecAssemblyEnd(b);
-  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
-  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+  VecRestoreArray(b, &bb);
+  VecRestoreArray(diag, &dd);
+  MatDiagonalSet(A, diag, INSERT_VALUES);
   MatSetOption(A, MAT_SPD, PETSC_TRUE);
 
-  VecCreateSeq(PETSC_COMM_SELF, n, &coords);
+  VecDuplicate(x, &coords);
   VecSetBlockSize(coords, 3);
   PetscScalar* c = nullptr;
   VecGetArray(coords, &c);
-  for (long k = 0; k < s.np; ++k)
-    for (int i = 0; i < 3; ++i) c[3 * k + i] = s.coordinates(k, i);
+  for (PetscInt d = r0; d < r1; ++d) c[d - r0] = s.coordinates(d / 3, d % 3);
   VecRestoreArray(coords, &c);
   MatNullSpace rigid;
   MatNullSpaceCreateRigidBody(coords, &rigid);
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
 
   KSP ksp;
   PC pc;
-  KSPCreate(PETSC_COMM_SELF, &ksp);
+  KSPCreate(PETSC_COMM_WORLD, &ksp);
   KSPSetOperators(ksp, A, A);
   KSPSetType(ksp, KSPCG);
   KSPGetPC(ksp, &pc);
@@ -111,12 +112,15 @@ int main(int argc, char** argv) {
   KSPConvergedReason reason;
   KSPGetIterationNumber(ksp, &iterations);
   KSPGetConvergedReason(ksp, &reason);
-  std::printf("{\"read_seconds\": %.4g, \"setup_seconds\": %.4g, \"solve_seconds\": %.4g, \"iterations\": %d, "
-              "\"reason\": \"%s\", \"total_seconds\": %.4g}\n",
-              read_seconds, setup, solve, static_cast<int>(iterations), KSPConvergedReasons[reason], since(t_start));
+  if (rank == 0)
+    std::printf("{\"read_seconds\": %.4g, \"setup_seconds\": %.4g, \"solve_seconds\": %.4g, \"iterations\": %d, "
+                "\"reason\": \"%s\", \"processes\": %d, \"total_seconds\": %.4g}\n",
+                read_seconds, setup, solve, static_cast<int>(iterations), KSPConvergedReasons[reason], size,
+                since(t_start));
   KSPDestroy(&ksp);
   MatNullSpaceDestroy(&rigid);
   VecDestroy(&coords);
+  VecDestroy(&diag);
   VecDestroy(&x);
   VecDestroy(&b);
   MatDestroy(&A);

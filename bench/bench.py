@@ -27,6 +27,9 @@ import subprocess
 import sys
 import time
 
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BEGIN, END = "<!-- bench:begin -->", "<!-- bench:end -->"
 STAGES = ["classify", "enrich", "assemble", "solve", "visualize", "rmserror"]
@@ -108,12 +111,24 @@ def machine():
 
 
 def ensure_mesh(r, cache, case):
+    """The cached mesh and the wall time / peak RSS of generating it (timed once, when generated)."""
     path = os.path.join(cache, case["mesh_file"])
-    if not os.path.exists(path):
-        log("generating %s (cached, not timed as a stage): %s" % (case["mesh_file"], " ".join(case["mesh_cmd"])))
-        subprocess.run([r.tool("xfem-mesh"), "-q"] + case["mesh_cmd"] + ["-o", path + ".tmp.vtu"], check=True)
+    timing = path + ".time.json"
+    if not os.path.exists(path) or not os.path.exists(timing):
+        log("generating %s (cached; timed once): %s" % (case["mesh_file"], " ".join(case["mesh_cmd"])))
+        w, m, _, _ = r.timed([r.tool("xfem-mesh"), "-q"] + case["mesh_cmd"] + ["-o", path + ".tmp.vtu"], cache)
         os.replace(path + ".tmp.vtu", path)
-    return path
+        with open(timing, "w") as f:
+            json.dump({"wall": w, "rss": m}, f)
+    return path, json.load(open(timing))
+
+
+def mpirun(processes):
+    """mpirun with what a shared 2-core box (and root) needs."""
+    cmd = ["mpirun", "-np", str(processes), "--oversubscribe", "--bind-to", "none"]
+    if os.geteuid() == 0:
+        cmd.append("--allow-run-as-root")
+    return cmd
 
 
 def stage_commands(case, r, ref):
@@ -155,7 +170,8 @@ def run_case(r, case, runs, cache, ref):
     if os.path.isdir(cwd):
         shutil.rmtree(cwd)
     os.makedirs(cwd)
-    shutil.copy(ensure_mesh(r, cache, case), os.path.join(cwd, "mesh.vtu"))
+    mesh_path, mesh_time = ensure_mesh(r, cache, case)
+    shutil.copy(mesh_path, os.path.join(cwd, "mesh.vtu"))
     cut_cache = os.path.join(cache, "cut.vtp")
     if not os.path.exists(cut_cache):
         subprocess.run([r.tool("xfem-mesh"), "-q", "cut-rect", "--beam-cut", "-o", cut_cache], check=True)
@@ -163,8 +179,9 @@ def run_case(r, case, runs, cache, ref):
     if ref is None:  # the reference case compares with itself (plain mesh mode of xfem-rmserror)
         ref = {"enriched": os.path.join(cwd, "enriched.vtu"), "u": os.path.join(cwd, "u.mtx")}
     cmds = stage_commands(case, r, ref)
-    res = {"name": case["name"], "label": case["label"], "mesh_cmd": case["mesh_cmd"], "stages": {}}
-    for stage in STAGES:
+    res = {"name": case["name"], "label": case["label"], "mesh_cmd": case["mesh_cmd"], "stages": {},
+           "mesh": mesh_time, "scale": case.get("scale", False), "cut": case["cut"]}
+    for stage in case.get("stages", STAGES):
         cmd, inputs, outputs = cmds[stage]
         walls, rsss, extra = [], [], []
         n = case.get("runs", runs)
@@ -180,15 +197,24 @@ def run_case(r, case, runs, cache, ref):
             elif stage == "solve":
                 rep = json.load(open(os.path.join(cwd, "solve.json")))
                 extra.append({"lib": rep["setup_seconds"] + rep["solve_seconds"]})
-                # the floor, alternating with the tool's runs
-                if i == 0:
-                    pinned = os.path.join(cwd, "system_pinned")
-                    subprocess.run([os.path.join(r.bench, "pin_unsupported"), "system", pinned], cwd=cwd, check=True,
-                                   stdout=subprocess.DEVNULL)
-                bw, bm, bout, _ = r.timed([os.path.join(r.bench, "bare_cholmod"), "system_pinned"], cwd)
-                b = json.loads(bout.strip().splitlines()[-1])
-                extra[-1].update({"bare_wall": bw, "bare_rss": bm,
-                                  "bare_lib": b["analyze_seconds"] + b["factor_seconds"] + b["solve_seconds"]})
+                res["backend"], res["processes"] = rep["backend"], rep.get("processes", 1)
+                res["iterations"] = rep.get("iterations")
+                # the floor of the backend xfem-solve chose, alternating with the tool's runs
+                if rep["backend"] == "cholmod":
+                    if i == 0:
+                        pinned = os.path.join(cwd, "system_pinned")
+                        subprocess.run([os.path.join(r.bench, "pin_unsupported"), "system", pinned], cwd=cwd,
+                                       check=True, stdout=subprocess.DEVNULL)
+                    bw, bm, bout, _ = r.timed([os.path.join(r.bench, "bare_cholmod"), "system_pinned"], cwd)
+                    b = json.loads(bout.strip().splitlines()[-1])
+                    extra[-1].update({"bare_wall": bw, "bare_rss": bm,
+                                      "bare_lib": b["analyze_seconds"] + b["factor_seconds"] + b["solve_seconds"]})
+                elif not case["cut"]:  # bare PETSc GAMG on as many ranks (the field split has no bare twin)
+                    bw, bm, bout, _ = r.timed(mpirun(res["processes"]) + [os.path.join(r.bench, "bare_petsc"), "system"],
+                                              cwd)
+                    b = json.loads(bout.strip().splitlines()[-1])
+                    extra[-1].update({"bare_wall": bw, "bare_rss": bm, "bare_lib": b["setup_seconds"] + b["solve_seconds"],
+                                      "bare_iterations": b["iterations"]})
             log("%s %s run %d/%d: %.2f s, %.0f MB" % (case["name"], stage, i + 1, n, w, m))
         st = {"wall": med(walls), "rss": med(rsss), "walls": walls,
               "bytes_in": size_of(inputs, cwd), "bytes_out": size_of(outputs, cwd),
@@ -212,11 +238,14 @@ def run_case(r, case, runs, cache, ref):
             log("%s bare_assemble: loop %.3f s, compute %.3f s, library %.3f s" %
                 (case["name"], b["loop_seconds"], b["compute_seconds"], b["library_seconds"]))
         elif stage == "solve":
-            res["lnz"] = json.load(open(os.path.join(cwd, "solve.json")))["factor_nonzeros"]
+            res["lnz"] = json.load(open(os.path.join(cwd, "solve.json"))).get("factor_nonzeros")
     # keep what the next cases need (the reference solution), drop the bulky rest
     for f in ("deformed.vtu", "system", "system_pinned", "classified.vtu", "mesh.vtu"):
         p = os.path.join(cwd, f)
-        shutil.rmtree(p) if os.path.isdir(p) else os.remove(p)
+        if os.path.isdir(p):
+            shutil.rmtree(p)
+        elif os.path.exists(p):
+            os.remove(p)
     return res, ref
 
 
@@ -229,7 +258,47 @@ def mb(b):
     return b / 1e6
 
 
+PIPELINE = ["classify", "enrich", "assemble", "solve", "visualize"]
+
+
+def pipeline_table(cases):
+    """Whole pipeline (default commands) per case: mesh + stages to deformed.vtu, peak memory."""
+    L = ["### Whole pipeline, default commands", "",
+         "From `xfem-mesh` to deformed.vtu (without PNG): the stage medians added up; mesh generation timed once, "
+         "when the mesh was generated. Peak = the largest peak RSS of any stage (they run one after another). "
+         "Solve floor: the bare library call of the backend xfem-solve chose, on as many processes.", "",
+         "| case | backend | mesh | classify | enrich | assemble | solve | visualize | whole (w/o mesh) | peak RSS | "
+         "whole / solve floor |",
+         "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for c in cases:
+        st = c["stages"]
+        stages = sum(st[k]["wall"] for k in PIPELINE)
+        whole = stages + c["mesh"]["wall"]
+        peak = max([st[k]["rss"] for k in PIPELINE] + [c["mesh"]["rss"]])
+        backend = c.get("backend", "?") + (" x %d" % c["processes"] if c.get("backend") == "petsc" else "")
+        if c.get("iterations"):
+            backend += ", %d it." % c["iterations"]
+        floor = st["solve"].get("bare_wall")
+        L.append("| %s | %s | %s | %s | %s s (%s s) | %.1f GB | %s |" % (
+            c["label"], backend, fmt_s(c["mesh"]["wall"]), " | ".join(fmt_s(st[k]["wall"]) for k in PIPELINE),
+            fmt_s(whole), fmt_s(stages), peak / 1024.0,
+            "%s / %s s = **%.2f**" % (fmt_s(whole), fmt_s(floor), whole / floor) if floor else "n/a"))
+    L.append("")
+    return L
+
+
+def growth_rows(cases, stages):
+    xs = [c["tets"] for c in cases]
+    rows = []
+    for s in ["mesh"] + stages:
+        ys = [c["mesh"]["wall"] if s == "mesh" else c["stages"][s]["wall"] for c in cases]
+        rows.append("| %s | %s | %.2f |" % (s, " | ".join(fmt_s(y) + " s" for y in ys), fit_exponent(xs, ys)))
+    return rows
+
+
 def report(cases, mach, runs, args):
+    scale = [c for c in cases if c.get("scale")]
+    cases = [c for c in cases if not c.get("scale")]
     beam = [c for c in cases if c["name"] != "reference"]
     ref = [c for c in cases if c["name"] == "reference"]
     largest = max(beam, key=lambda c: c["tets"]) if beam else None
@@ -250,13 +319,17 @@ def report(cases, mach, runs, args):
     L.append("")
     L.append("### Inputs")
     L.append("")
-    L.append("| case | mesh (`xfem-mesh ...`, cached in bench/out/cache, not timed) | points | tets | cut tets | "
-             "enriched tets | 3N (DOFs) | nnz(K), lower | nnz(L), CHOLMOD |")
-    L.append("|---|---|---|---|---|---|---|---|---|")
-    for c in cases:
-        L.append("| %s | `%s` | %d | %d | %d | %d | %d | %d | %d |" % (
+    L.append("| case | mesh (`xfem-mesh ...`, cached in bench/out/cache) | points | tets | cut tets | "
+             "enriched tets | 3N (DOFs) | nnz(K), lower | xfem-solve backend (auto) | nnz(L), CHOLMOD |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|")
+    for c in cases + scale:
+        L.append("| %s | `%s` | %d | %d | %d | %d | %d | %d | %s | %s |" % (
             c["label"], " ".join(c["mesh_cmd"]), c["points"], c["tets"], c["cut_tets"],
-            c["stages"]["assemble"]["enriched_tets"], c["dofs"], c["nnz"], c["lnz"]))
+            c["stages"]["assemble"]["enriched_tets"], c["dofs"], c["nnz"],
+            c.get("backend", "?") + (" on %d processes" % c["processes"] if c.get("backend") == "petsc" else ""),
+            "%d" % c["lnz"] if c.get("lnz") else "-"))
+    L.append("")
+    L.extend(pipeline_table(cases + scale))
     L.append("")
     L.append("### Wall time, peak memory, throughput per stage")
     L.append("")
@@ -279,8 +352,10 @@ def report(cases, mach, runs, args):
     L.append("")
     L.append("### Against the floor")
     L.append("")
-    L.append("Ratio = tool / floor (1.00 = at the floor). Solve: bench/bare_cholmod on the same matrix (whole "
-             "process, and the library part: analyse + factor + solve in both). Assemble: bench/bare_assemble, "
+    L.append("Ratio = tool / floor (1.00 = at the floor). Solve: the bare library calls of the backend xfem-solve "
+             "chose, on the same files: bench/bare_cholmod (analyse + factor + solve), or bench/bare_petsc under "
+             "mpirun on as many ranks (MatLoad, elimination, GAMG setup + CG; uncut systems only: the field split "
+             "of cut systems has no bare twin), whole process and library part. Assemble: bench/bare_assemble, "
              "the same element matrices in memory; the floor is the faster of its element loop without scatter "
              "and the library's stiffness_matrix (pattern + loop + scatter), compared with the tool's own "
              "reported assembly time (pattern + plain + enriched tets) and with its whole wall time. Every "
@@ -290,14 +365,14 @@ def report(cases, mach, runs, args):
              "assemble: wall / floor | assemble: wall / (floor + `cat` of its bytes) | "
              "assemble: floor (loop w/o scatter, library, plain loop with scatter) |")
     L.append("|---|---|---|---|---|---|---|")
-    for c in cases:
+    for c in cases + scale:
         so, a = c["stages"]["solve"], c["stages"]["assemble"]
         floor = min(a["bare_compute"], a["bare_library"])
         reported = a["pattern"] + a["plain"] + a["enriched"]
-        L.append("| %s | %s / %s s = **%.2f** | %s / %s s = **%.2f** | %s / %s s = **%.2f** | %s / %s s = **%.2f** | "
+        ratio = lambda x, y: "%s / %s s = **%.2f**" % (fmt_s(x), fmt_s(y), x / y) if y else "n/a"
+        L.append("| %s | %s | %s | %s / %s s = **%.2f** | %s / %s s = **%.2f** | "
                  "%s / %s s = **%.2f** | %s, %s, %s s |" % (
-                     c["label"], fmt_s(so["wall"]), fmt_s(so["bare_wall"]), so["wall"] / so["bare_wall"],
-                     fmt_s(so["lib"]), fmt_s(so["bare_lib"]), so["lib"] / so["bare_lib"],
+                     c["label"], ratio(so["wall"], so.get("bare_wall")), ratio(so["lib"], so.get("bare_lib")),
                      fmt_s(reported), fmt_s(floor), reported / floor, fmt_s(a["wall"]), fmt_s(floor), a["wall"] / floor,
                      fmt_s(a["wall"]), fmt_s(floor + a["io_floor"]), a["wall"] / (floor + a["io_floor"]),
                      fmt_s(a["bare_compute"]), fmt_s(a["bare_library"]), fmt_s(a["bare_loop"])))
@@ -306,7 +381,7 @@ def report(cases, mach, runs, args):
     L.append("")
     L.append("| case | read | pattern | plain tets | enriched tets | loads | write | wall |")
     L.append("|---|---|---|---|---|---|---|---|")
-    for c in cases:
+    for c in cases + scale:
         a = c["stages"]["assemble"]
         L.append("| %s | %s |" % (c["label"], " | ".join(fmt_s(a[k]) for k in
                                                           ("read", "pattern", "plain", "enriched", "loads", "write", "wall"))))
@@ -319,8 +394,10 @@ def report(cases, mach, runs, args):
     L.append("")
     L.append("| case | stage | read MB | written MB | wall s | cat s | stage MB/s | cat MB/s | wall / cat |")
     L.append("|---|---|---|---|---|---|---|---|---|")
-    for c in cases:
+    for c in cases + scale:
         for stage in STAGES:
+            if stage not in c["stages"]:
+                continue
             s = c["stages"][stage]
             tot = mb(s["bytes_in"] + s["bytes_out"])
             L.append("| %s | %s | %.1f | %.1f | %s | %s | %.0f | %.0f | %.1f |" % (
@@ -337,7 +414,8 @@ def report(cases, mach, runs, args):
         xs = [c["tets"] for c in beam]
         rows = [(s, [c["stages"][s]["wall"] for c in beam]) for s in STAGES]
         rows.append(("solve, library part", [c["stages"]["solve"]["lib"] for c in beam]))
-        rows.append(("bare CHOLMOD, library part", [c["stages"]["solve"]["bare_lib"] for c in beam]))
+        if all(c["stages"]["solve"].get("bare_lib") and c.get("backend") == "cholmod" for c in beam):
+            rows.append(("bare CHOLMOD, library part", [c["stages"]["solve"]["bare_lib"] for c in beam]))
         rows.append(("assemble, reported", [sum(c["stages"]["assemble"][k] for k in ("pattern", "plain", "enriched"))
                                             for c in beam]))
         for name, ys in rows:
@@ -351,15 +429,29 @@ def report(cases, mach, runs, args):
         st = largest["stages"]
         a = st["assemble"]
         afloor = min(a["bare_compute"], a["bare_library"])
-        rows = [("solve", "bare CHOLMOD, whole process", st["solve"]["wall"] / st["solve"]["bare_wall"]),
-                ("solve (library part)", "bare CHOLMOD analyse + factor + solve", st["solve"]["lib"] / st["solve"]["bare_lib"]),
-                ("assemble", "bare element loop in memory, vs the tool's whole wall time", a["wall"] / afloor),
+        rows = []
+        if st["solve"].get("bare_wall"):
+            rows += [("solve", "bare library, whole process", st["solve"]["wall"] / st["solve"]["bare_wall"]),
+                     ("solve (library part)", "bare library calls", st["solve"]["lib"] / st["solve"]["bare_lib"])]
+        rows += [("assemble", "bare element loop in memory, vs the tool's whole wall time", a["wall"] / afloor),
                 ("assemble", "bare element loop in memory + `cat` of its bytes", a["wall"] / (afloor + a["io_floor"]))]
         for s in ("classify", "enrich", "visualize", "rmserror"):
             rows.append((s, "`cat` of its bytes", st[s]["wall"] / max(st[s]["io_floor"], 1e-3)))
         for s, f, q in rows:
             L.append("| %s | %s | %.2f | %s |" % (s, f, q, "yes" if q <= 2 else "no (see \"Why not at the floor\")"))
         L.append("")
+    for kind in ("reference", "beam"):
+        pair = [c for c in cases + scale if (c["name"] == "reference") == (kind == "reference") and
+                (c["name"] == "reference" or c.get("scale") or c is largest)]
+        if len(pair) == 2 and any(c.get("scale") for c in pair):
+            L.append("### Growth to the scale case (%s)" % " -> ".join(c["label"] for c in pair))
+            L.append("")
+            L.append("Exponent p of wall ~ tets^p between the two sizes (1 = linear).")
+            L.append("")
+            L.append("| stage | " + " | ".join("%s (%d tets)" % (c["label"], c["tets"]) for c in pair) + " | p |")
+            L.append("|---|---|---|---|")
+            L.extend(growth_rows(pair, PIPELINE))
+            L.append("")
     L.append("### Commands")
     L.append("")
     L.append("```")
@@ -373,7 +465,9 @@ def report(cases, mach, runs, args):
     L.append("xfem-rmserror -q enriched.vtu --cut cut.vtp --solution u.mtx --reference ../reference/enriched.vtu \\")
     L.append("    --reference-solution ../reference/u.mtx -o rms.json   # the reference against itself for its own row")
     L.append("bare_assemble enriched.vtu cut.vtp P 0 RUNS                   # floor of xfem-assemble")
-    L.append("pin_unsupported system system_pinned && bare_cholmod system_pinned   # floor of xfem-solve")
+    L.append("pin_unsupported system system_pinned && bare_cholmod system_pinned   # floor of xfem-solve (CHOLMOD)")
+    L.append("mpirun -np P bare_petsc system                                    # floor of xfem-solve (PETSc, uncut)")
+    L.append("# --scale adds, one run each, no rmserror: the 1.14M-DOF reference and the ~1M-tet cut beam")
     L.append("```")
     L.append(END)
     return "\n".join(L)
@@ -401,10 +495,16 @@ def main():
     ap.add_argument("--large-runs", type=int, default=3, help="runs for the largest beam and the reference")
     ap.add_argument("--sizes", nargs=3, default=["0.007", "0.0034", "0.002"],
                     help="target edge lengths H of the three unstructured beams (m)")
+    ap.add_argument("--scale", action="store_true",
+                    help="also the scale cases, one run each: the 1.14M-DOF reference (box 30 60 200) and the cut "
+                         "beam of about 1M tets (H 0.0016)")
+    ap.add_argument("--scale-size", default="0.0016", help="H of the scale beam (m)")
+    ap.add_argument("--only-scale", action="store_true", help="run only the scale cases (quick look; not for the doc)")
     ap.add_argument("--no-write", action="store_true", help="print the tables instead of writing docs/PERFORMANCE.md")
     args = ap.parse_args()
     build = os.path.abspath(args.build)
-    for exe in ("tools/xfem-classify", "bench/bare_cholmod", "bench/bare_assemble", "bench/pin_unsupported"):
+    for exe in ("tools/xfem-classify", "bench/bare_cholmod", "bench/bare_petsc", "bench/bare_assemble",
+                "bench/pin_unsupported"):
         if not os.access(os.path.join(build, exe), os.X_OK):
             raise SystemExit("bench: %s missing: build first (make -f Makefile.examples build)" % os.path.join(build, exe))
     work = os.path.join(ROOT, "bench", "out")
@@ -421,6 +521,16 @@ def main():
                       "mesh_file": "beam-%s.vtu" % h,
                       "mesh_cmd": ["unstructured-box", "--hi"] + BEAM_HI + ["--size", h]})
     cases[-1]["runs"] = args.large_runs
+    scale_stages = ["classify", "enrich", "assemble", "solve", "visualize"]
+    if args.scale or args.only_scale:
+        cases.append({"name": "reference-1M", "label": "reference 1.14M DOFs", "cut": False, "runs": 1, "scale": True,
+                      "mesh_file": "reference-1M.vtu", "stages": scale_stages,
+                      "mesh_cmd": ["box", "--cells", "30", "60", "200", "--hi"] + BEAM_HI + ["--beam-cut"]})
+        cases.append({"name": "beam-1M", "label": "beam 1M (H %s)" % args.scale_size, "cut": True, "runs": 1,
+                      "scale": True, "mesh_file": "beam-%s.vtu" % args.scale_size, "stages": scale_stages,
+                      "mesh_cmd": ["unstructured-box", "--hi"] + BEAM_HI + ["--size", args.scale_size]})
+    if args.only_scale:
+        cases = [c for c in cases if c.get("scale")]
     results, ref = [], None
     for case in cases:
         log("case %s" % case["name"])

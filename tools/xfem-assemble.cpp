@@ -27,11 +27,15 @@ int main(int argc, char** argv) {
       "(closed form for plain tets; tets with enriched DOFs split exactly along the cut, Gauss rules\n"
       "collapsed onto the cut front where crack-tip functions live), loads on the\n"
       "original DOFs, and the Dirichlet data of problem.json (docs/FORMATS.md). Writes the system/\n"
-      "directory xfem-solve reads: K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx, system.json,\ndirichlet_conditions.json. Units SI: metres, pascals, newtons.",
+      "directory xfem-solve reads (written atomically; system.json last): K.petsc, f.petsc, coordinates.petsc\n"
+      "(PETSc's binary format, loaded in parallel by each rank), dirichlet.mtx, system.json; with --format mtx\n"
+      "K.mtx, f.mtx, coordinates.mtx (Matrix Market text, e.g. for scipy.io.mmread) instead; and\n"
+      "dirichlet_conditions.json (which condition fixes which DOF, for reaction forces). Units SI: metres,\n"
+      "pascals, newtons.",
       "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json -o out/system");
   std::string input, cut_path, problem_path, output;
   int points = 0, refine = -1, order = 0;
-  std::string rule;
+  std::string rule, format = "petsc";
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
   app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
@@ -56,7 +60,12 @@ int main(int argc, char** argv) {
   app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
                                    "(default: problem.json's integration.order, else 3)")
       ->check(CLI::Range(1, 20));
-  app.add_option("-o,--output", output, "system directory (created if missing)")->required();
+  app.add_option("-o,--output", output, "system directory (created, or replaced as a whole when it holds an older "
+                                       "system)")->required();
+  app.add_option("--format", format, "how K, f and the coordinates are stored: petsc (binary, default; what xfem-solve "
+                                     "loads fastest, in parallel) or mtx (Matrix Market text, for scipy and other "
+                                     "readers; xfem-solve reads it too)")
+      ->check(CLI::IsMember({"petsc", "mtx"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
@@ -82,9 +91,11 @@ int main(int argc, char** argv) {
     xfem::AssemblyStats s;
     const xfem::LinearSystem system = xfem::assemble_system(em, problem, points, refine, &s, xfem::cli::progress("assembling"));
     const double write_start = xfem::cli::now();
-    // Which condition fixes which DOF: xfem-solve sums the reaction forces per condition.
+    xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version,
+                              format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc);
+    // Which condition fixes which DOF: xfem-solve sums the reaction forces per condition. Written
+    // into the finished directory (xfem-solve reports one total without it).
     xfem::write_dirichlet_groups(xfem::dirichlet_groups(em.mesh, problem), output, std::string("xfem-assemble ") + xfem::version);
-    xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version);
     const double write = xfem::cli::now() - write_start;
 
     long constrained = 0;

@@ -1,13 +1,24 @@
 // SPDX-License-Identifier: MIT
 // Solves the assembled system K u = f with its Dirichlet conditions (issue 5; DESIGN.md stages).
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
+#include <mutex>
+#include <thread>
 
 #include "xfem/cholmod_solver.h"
 #include "xfem/cli.h"
 #include "xfem/dirichlet.h"
 #include "xfem/error.h"
 #include "xfem/linear_system.h"
+#include "xfem/petsc_binary.h"
 #include "xfem/petsc_solver.h"
 #include "xfem/reactions.h"
 #include "xfem/version.h"
@@ -25,6 +36,66 @@ std::string g(double v) {
   return buf;
 }
 
+// Prints "<tool>: <what>: 12 s" on stderr every few seconds while a long library call runs (from
+// 3 s on), so a user sees that a factorization of a minute is alive. Nothing when quiet.
+class Ticker {
+ public:
+  Ticker(std::string what, bool enabled) : what_(std::move(what)) {
+    if (enabled) thread_ = std::thread([this] { run(); });
+  }
+  ~Ticker() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void run() {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (int seconds = 3;; seconds += seconds < 10 ? 3 : 10) {
+      if (wake_.wait_until(lock, start + std::chrono::seconds(seconds), [this] { return done_; })) return;
+      xfem::cli::info(what_ + ": " + std::to_string(seconds) + " s so far");
+    }
+  }
+  std::string what_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+bool under_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+// Restarts this very program under `mpirun -np P` with the same arguments (the ranks see the
+// MPI environment and do not restart again). Returns only if mpirun cannot be started.
+void restart_under_mpirun(int processes, int argc, char** argv) {
+  // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
+  std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(processes), "--oversubscribe",
+                                   "--bind-to", "none"};
+  if (::geteuid() == 0) {  // Open MPI refuses root unless told twice
+    args.push_back("--allow-run-as-root");
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  }
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  args.push_back(ec ? std::string(argv[0]) : self.string());
+  for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
+  std::vector<char*> cargs;
+  for (auto& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  std::fflush(stderr);
+  ::execvp("mpirun", cargs.data());
+}
+
 // The enriched.vtu point array and value that find the mesh point of enriched vector k (FORMATS.md).
 std::string enriched_point_key(const xfem::LinearSystem& s, long k) {
   if (k < s.np + s.ns) return "sign_dof = " + std::to_string(k);
@@ -38,23 +109,32 @@ int main(int argc, char** argv) {
       "xfem-solve",
       "Solves K u = f of an xfem-assemble system directory with its Dirichlet conditions (eliminated, K stays SPD).\n"
       "Writes the full solution (3N values in metres: original, sign and branch DOFs; constrained DOFs at their\n"
-      "values) and reports the reaction force (N) and moment (N m, about the origin) of each Dirichlet condition.",
+      "values) and reports the reaction force (N) and moment (N m, about the origin) of each Dirichlet condition.\n"
+      "The backend is chosen from the system unless given: CHOLMOD (direct) for small systems, PETSc CG + GAMG\n"
+      "for large ones, started on several MPI processes by itself (mpirun; --np) when the system is large.",
       "xfem-solve out/system -o out/u.mtx --report out/solve.json\n"
-      "  mpirun -np 2 xfem-solve out/system -o out/u.mtx --backend petsc --rtol 1e-8");
-  std::string dir, output, report_path, reactions_path, backend = "cholmod", ordering = "metis", near_null = "rigid",
+      "  xfem-solve out/system -o out/u.mtx --backend petsc --np 2 --rtol 1e-8");
+  std::string dir, output, report_path, reactions_path, backend = "auto", ordering = "metis", near_null = "rigid",
               enriched_block = "auto";
   double rtol = 1e-10, drop_tol = 0;
-  int max_iterations = 10000;
+  int max_iterations = 10000, processes = 0;
   auto& app = tool->app;
-  app.add_option("system", dir, "system directory written by xfem-assemble (K.mtx, f.mtx, dirichlet.mtx, system.json)")
+  app.add_option("system", dir, "system directory written by xfem-assemble (system.json, K.petsc or K.mtx, ...)")
       ->required();
   app.add_option("-o,--output", output, "solution vector u (Matrix Market, 3N x 1, m)")->required();
   app.add_option("--report", report_path, "JSON report (sizes, backend, timings, residual, reaction forces in N and "
                                          "moments in N m per Dirichlet condition)");
   app.add_option("--reactions", reactions_path, "also write the nodal reactions r = K u - f (Matrix Market, 3N x 1, N; "
                                                 "non-zero on constrained DOFs only) for xfem-visualize --reactions");
-  app.add_option("--backend", backend, "cholmod (direct, default) or petsc (CG + GAMG; run under mpirun for MPI)")
-      ->check(CLI::IsMember({"cholmod", "petsc"}));
+  app.add_option("--backend", backend,
+                 "auto (default: cholmod below " + std::to_string(xfem::kPetscFromDofs) + " DOFs, " +
+                     std::to_string(xfem::kPetscFromDofsEnriched) +
+                     " with enriched DOFs, else petsc), cholmod (direct) or petsc (CG + GAMG, on --np processes)")
+      ->check(CLI::IsMember({"auto", "cholmod", "petsc"}));
+  app.add_option("--np", processes,
+                 "PETSc: MPI processes; xfem-solve starts itself under mpirun for more than 1 (default: 1 per " +
+                     std::to_string(xfem::kDofsPerProcess) + " DOFs, at most the number of cores). Under mpirun: ignored")
+      ->check(CLI::Range(1, 1024));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   app.add_option("--rtol", rtol, "PETSc: relative residual ||f - K u|| / ||f|| to reach (default 1e-10)")
@@ -62,7 +142,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-iterations", max_iterations, "PETSc: CG iteration limit (default 10000)")
       ->check(CLI::PositiveNumber);
   app.add_option("--near-null-space", near_null, "PETSc: GAMG near-null space: rigid (rigid-body modes of the original "
-                                                 "DOFs, needs coordinates.mtx; default), rigid-enriched (also the "
+                                                 "DOFs, needs the coordinates in the system; default), rigid-enriched (also the "
                                                  "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
       ->check(CLI::IsMember({"rigid", "rigid-enriched", "none"}));
   app.add_option("--enriched-block", enriched_block,
@@ -78,15 +158,63 @@ int main(int argc, char** argv) {
                  "of K is exactly zero are always fixed to 0, with a warning")
       ->check(CLI::NonNegativeNumber);
   return xfem::cli::run(*tool, argc, argv, [&] {
+    const bool mpi_child = under_mpirun();
+    if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
+      // The choice from the system without K (cheap), the same in every rank of a restart.
+      const xfem::LinearSystem head = xfem::read_linear_system(dir, false);
+      const long dofs = 3 * head.n;
+      if (backend == "auto") backend = processes > 1 ? "petsc" : xfem::automatic_backend(dofs, head.n > head.np);
+      if (backend == "petsc" && !mpi_child) {
+        const int wanted = processes > 0 ? processes
+                                         : xfem::automatic_processes(dofs, static_cast<int>(std::thread::hardware_concurrency()));
+        if (wanted > 1) {
+          // The checks a rank would fail on, here once: one error line instead of one per rank.
+          const std::string k_path = xfem::system_matrix_file(dir, xfem::system_format(dir));
+          if (xfem::system_format(dir) == xfem::SystemFormat::Petsc) {
+            const xfem::PetscMatrixHeader h = xfem::read_petsc_matrix_header(k_path);
+            if (h.rows != dofs || h.cols != dofs)
+              throw xfem::Error(k_path + ": " + std::to_string(h.rows) + " x " + std::to_string(h.cols) +
+                                ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs));
+          }
+          xfem::cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
+          restart_under_mpirun(wanted, argc, argv);
+          xfem::cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
+        }
+      }
+    }
     std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
     const bool root = !mpi || mpi->rank() == 0;
+    // Failures are collective (every rank reads the same files and fails alike): rank 0 alone
+    // reports, so a bad input gives one error line, not one per rank (-v keeps them all).
+    if (!root && !tool->verbose) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      if (null >= 0) ::dup2(null, 2), ::close(null);
+    }
     const auto info = [&](const std::string& m) { if (root) xfem::cli::info(m); };
     const auto warn = [&](const std::string& m) { if (root) xfem::cli::warn(m); };
 
     const double t_read = xfem::cli::now();
-    xfem::LinearSystem s = xfem::read_linear_system(dir);
-    const long nonzeros = (s.K.nonZeros() + s.K.rows()) / 2;  // stored triangle (K is symmetric)
+    // The PETSc backend loads K from a binary system itself, each rank only its rows; the checks
+    // of enriched DOFs below need only K's diagonal then (a zero diagonal of the positive
+    // semi-definite K is a zero row), which stands in for K in `s`.
+    const bool distributed_load = backend == "petsc" && xfem::system_format(dir) == xfem::SystemFormat::Petsc;
+    xfem::LinearSystem s = xfem::read_linear_system(dir, !distributed_load);
+    xfem::PetscMatrix distributed;
+    long nonzeros = 0;
+    if (distributed_load) {
+      const std::string k_path = xfem::system_matrix_file(dir, xfem::SystemFormat::Petsc);
+      distributed = xfem::petsc_load_matrix(k_path, 3 * s.n);
+      nonzeros = (xfem::read_petsc_matrix_header(k_path).nonzeros + 3 * s.n) / 2;
+      const Eigen::VectorXd diag = xfem::petsc_diagonal(distributed);
+      s.K.resize(3 * s.n, 3 * s.n);
+      s.K.reserve(Eigen::VectorXi::Ones(3 * s.n));
+      for (long d = 0; d < 3 * s.n; ++d) s.K.insert(d, d) = diag[d];
+      s.K.makeCompressed();
+    } else {
+      nonzeros = (s.K.nonZeros() + s.K.rows()) / 2;  // stored triangle (K is symmetric)
+      if (backend == "petsc") distributed = xfem::petsc_matrix(s.K);
+    }
     info(dir + ": N = " + std::to_string(s.n) + " (NP " + std::to_string(s.np) + ", NS " + std::to_string(s.ns) +
          ", NB " + std::to_string(s.nb) + "), " + std::to_string(3 * s.n) + " DOFs, " + std::to_string(nonzeros) +
          " non-zeros in the lower triangle, " + std::to_string(s.fixed.size()) + " fixed; read in " +
@@ -126,11 +254,13 @@ int main(int argc, char** argv) {
     report["unsupported_enriched_dofs"] = static_cast<long>(unsupported.size());
     report["dropped_enriched_dofs"] = drop_tol > 0 ? static_cast<long>(tiny.size()) : 0L;
     report["backend"] = backend;
-    const xfem::ReducedSystem reduced = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
     Eigen::VectorXd u;
+    double residual = 0;
     if (backend == "cholmod") {
+      const xfem::ReducedSystem reduced = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
       xfem::CholmodResult c;
       try {
+        const Ticker ticker("CHOLMOD analyse + factorization", !tool->quiet);
         c = xfem::cholmod_solve(reduced.K, reduced.f, ordering == "amd" ? xfem::Ordering::Amd : xfem::Ordering::Metis);
       } catch (const xfem::NotPositiveDefinite& e) {
         throw xfem::Error("K is not positive definite at " + xfem::describe_dof(s, reduced.free_dofs[e.column]) +
@@ -150,10 +280,23 @@ int main(int argc, char** argv) {
       report["rcond_estimate"] = c.rcond;
       report["setup_seconds"] = c.analyze_seconds + c.factor_seconds;
       report["solve_seconds"] = c.solve_seconds;
+      residual = xfem::relative_residual(s.K, s.f, u, reduced);
     } else {
       const std::string block = enriched_block != "auto" ? enriched_block : s.n > s.np ? "direct" : "gamg";
-      const xfem::PetscResult p = xfem::petsc_solve(s, {rtol, max_iterations, near_null, block});
+      xfem::PetscSolveOptions options{rtol, max_iterations, near_null, block, {}};
+      const double t_start = xfem::cli::now();
+      double first = 0;
+      if (tool->verbose && root)
+        options.monitor = [&](long iteration, double norm) {
+          if (iteration == 0) first = norm;
+          xfem::cli::detail("CG iteration " + std::to_string(iteration) + ": residual " + g(norm) + " N (" +
+                            g(first > 0 ? norm / first : norm) + " of the first), " + g(xfem::cli::now() - t_start) +
+                            " s");
+        };
+      const Ticker ticker("PETSc setup + CG", root && !tool->quiet);
+      const xfem::PetscResult p = xfem::petsc_solve(std::move(distributed), s, options);
       u = p.u;
+      residual = p.relative_residual;
       info("PETSc CG + " + p.preconditioner + " on " + std::to_string(p.processes) + " process(es), near-null space " +
            near_null + ": " + std::to_string(p.iterations) + " iterations (" + p.converged_reason + "); setup " +
            g(p.setup_seconds) + " s, solve " + g(p.solve_seconds) + " s");
@@ -166,17 +309,19 @@ int main(int argc, char** argv) {
       report["setup_seconds"] = p.setup_seconds;
       report["solve_seconds"] = p.solve_seconds;
     }
-    const double residual = xfem::relative_residual(s.K, s.f, u, reduced);
     info("relative residual ||K u - f|| / ||f|| on the free DOFs: " + g(residual));
     report["relative_residual"] = residual;
     const double limit = backend == "cholmod" ? 1e-8 : 10 * rtol;
     if (!(residual <= limit))
       throw xfem::Error("the solution is inaccurate (relative residual " + g(residual) +
                         "): K is numerically singular; no output written");
-    const xfem::Reactions reactions = xfem::reactions(dir, s, u);  // r = K u - f on the constrained DOFs
-    for (const auto& r : reactions.conditions) info(xfem::describe_reaction(r, reactions.moments));
-    report["reactions"] = xfem::reactions_json(reactions.conditions, reactions.applied, reactions.moments);
     if (root) {
+      // r = K u - f on the constrained DOFs. Each PETSc rank loaded only its rows of K, and `s` holds
+      // its diagonal only: the root reads the whole K again for the reactions.
+      const xfem::LinearSystem full = distributed_load ? xfem::read_linear_system(dir, true) : xfem::LinearSystem();
+      const xfem::Reactions reactions = xfem::reactions(dir, distributed_load ? full : s, u);
+      for (const auto& r : reactions.conditions) info(xfem::describe_reaction(r, reactions.moments));
+      report["reactions"] = xfem::reactions_json(reactions.conditions, reactions.applied, reactions.moments);
       if (!reactions_path.empty()) xfem::write_vector(reactions.r, reactions_path);
       xfem::write_vector(u, output);
       if (!report_path.empty()) xfem::write_json(report, report_path);

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/linear_system.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "xfem/atomic_file.h"
 #include "xfem/error.h"
+#include "xfem/petsc_binary.h"
 
 namespace xfem {
 namespace {
@@ -88,24 +94,67 @@ void check_linear_system(const LinearSystem& s, const std::string& where) {
                 std::to_string(s.coordinates.cols()) + ", expected NP x 3 = " + std::to_string(s.np) + " x 3");
 }
 
-void write_linear_system(const LinearSystem& s, const std::string& dir, const std::string& generator) {
-  check_linear_system(s, dir);
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every name a system directory may hold: an existing directory with anything else in it is not
+// replaced (it is someone's data, not an older system).
+bool is_system_file(const std::string& name) {
+  for (const char* known : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "K.petsc", "f.petsc", "dirichlet_conditions.json",
+                            "coordinates.petsc", "system.json"})
+    if (name == known) return true;
+  return false;
+}
+
+// Puts the finished directory `tmp` in the place of `target`. An existing target is swapped
+// out atomically (renameat2 RENAME_EXCHANGE), else moved aside first; removed only afterwards.
+void move_into_place(const fs::path& tmp, const fs::path& target) {
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir)) throw Error(dir + ": cannot create directory");
-  write_symmetric_matrix(s.K, join(dir, "K.mtx"));
-  write_vector(s.f, join(dir, "f.mtx"));
-  write_dirichlet(s, join(dir, "dirichlet.mtx"));
+  if (!fs::exists(target)) {
+    fs::rename(tmp, target, ec);
+    if (ec) throw Error(target.string() + ": cannot rename the temporary directory into place: " + ec.message());
+    return;
+  }
+  if (::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
+    fs::remove_all(tmp, ec);  // now the old system
+    return;
+  }
+  const fs::path old = tmp.string() + ".old";
+  fs::rename(target, old, ec);
+  if (ec) throw Error(target.string() + ": cannot move the old directory aside: " + ec.message());
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::rename(old, target, ignored);
+    throw Error(target.string() + ": cannot rename the temporary directory into place: " + ec.message());
+  }
+  fs::remove_all(old, ec);
+}
+
+void write_system_files(const LinearSystem& s, const std::string& tmp, const std::string& dir,
+                        const std::string& generator, SystemFormat format) {
+  const bool binary = format == SystemFormat::Petsc;
+  if (binary) {
+    write_petsc_symmetric_matrix(s.K, join(tmp, "K.petsc"));
+    write_petsc_vector(s.f, join(tmp, "f.petsc"));
+  } else {
+    write_symmetric_matrix(s.K, join(tmp, "K.mtx"));
+    write_vector(s.f, join(tmp, "f.mtx"));
+  }
+  write_dirichlet(s, join(tmp, "dirichlet.mtx"));
   const bool with_coordinates = s.coordinates.size() != 0;
   if (with_coordinates) {
     Eigen::VectorXd c(3 * s.np);
     for (long k = 0; k < s.np; ++k) c.segment<3>(3 * k) = s.coordinates.row(k).transpose();
-    write_vector(c, join(dir, "coordinates.mtx"));
-  } else {
-    std::filesystem::remove(join(dir, "coordinates.mtx"), ec);  // a stale one would lie
+    if (binary)
+      write_petsc_vector(c, join(tmp, "coordinates.petsc"));
+    else
+      write_vector(c, join(tmp, "coordinates.mtx"));
   }
   Json j;
   j["generator"] = generator;
+  j["format"] = binary ? "petsc" : "matrix-market";
   j["np"] = s.np;
   j["ns"] = s.ns;
   j["nb"] = s.nb;
@@ -114,18 +163,73 @@ void write_linear_system(const LinearSystem& s, const std::string& dir, const st
   j["nonzeros"] = lower_nonzeros(s.K);
   j["fixed"] = static_cast<long>(s.fixed.size());
   j["coordinates"] = with_coordinates;
+  j["enriched"] = s.n > s.np;
   j["pieces"] = Json::array();
   for (const Piece& p : s.pieces) j["pieces"].push_back(Json{{"tets", p.tets}, {"constrained", p.constrained}});
+  (void)dir;
   // system.json last: its presence says the directory is complete.
-  write_json(j, join(dir, "system.json"));
+  write_json(j, join(tmp, "system.json"));
 }
 
-LinearSystem read_linear_system(const std::string& dir) {
+}  // namespace
+
+void write_linear_system(const LinearSystem& s, const std::string& dir, const std::string& generator,
+                         SystemFormat format) {
+  check_linear_system(s, dir);
+  for (long k = 0; k < s.K.nonZeros(); ++k)
+    if (!std::isfinite(s.K.valuePtr()[k])) throw Error(dir + ": K holds a non-finite value; nothing written");
+  if (!s.f.allFinite()) throw Error(dir + ": f holds a non-finite value; nothing written");
+  fs::path target = fs::path(dir).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/system/"
+  if (target.empty() || target.filename() == "." || target.filename() == "..")
+    throw Error(dir + ": name the system directory itself (e.g. out/system)");
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (!fs::is_directory(parent)) throw Error(dir + ": cannot create the parent directory " + parent.string());
+  if (fs::exists(target)) {
+    if (!fs::is_directory(target)) throw Error(dir + ": exists and is not a directory");
+    for (const auto& entry : fs::directory_iterator(target))
+      if (!is_system_file(entry.path().filename().string()))
+        throw Error(dir + ": exists and holds " + entry.path().filename().string() +
+                    ", which is not part of a system directory; not replacing it (choose another -o)");
+  }
+  const fs::path tmp = parent / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  fs::remove_all(tmp, ec);
+  if (!fs::create_directory(tmp, ec)) throw Error(dir + ": cannot create " + tmp.string() + ": " + ec.message());
+  try {
+    write_system_files(s, tmp.string(), dir, generator, format);
+    move_into_place(tmp, target);
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
+SystemFormat system_format(const std::string& dir) {
+  const std::string json_path = join(dir, "system.json");
+  const Json j = read_with_hint([&] { return read_json(json_path); });
+  const std::string format = j.value("format", std::string("matrix-market"));
+  if (format == "petsc") return SystemFormat::Petsc;
+  if (format == "matrix-market") return SystemFormat::MatrixMarket;
+  throw Error(json_path + ": unknown format '" + format + "' (petsc or matrix-market)" + kHint);
+}
+
+std::string system_matrix_file(const std::string& dir, SystemFormat format) {
+  return join(dir, format == SystemFormat::Petsc ? "K.petsc" : "K.mtx");
+}
+
+LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
   if (!std::filesystem::exists(dir)) throw Error(dir + ": no such directory" + kHint);
   if (!std::filesystem::is_directory(dir))
     throw Error(dir + ": not a directory (expected the system directory written by xfem-assemble)");
   const std::string json_path = join(dir, "system.json");
+  if (!std::filesystem::exists(json_path))
+    throw Error(dir + ": no system.json, the marker xfem-assemble writes last: the directory is incomplete or not "
+                "a system (rerun xfem-assemble)");
   const Json j = read_with_hint([&] { return read_json(json_path); });
+  const SystemFormat format = system_format(dir);
+  const bool binary = format == SystemFormat::Petsc;
   LinearSystem s;
   s.np = get_count(j, "np", json_path);
   s.ns = get_count(j, "ns", json_path);
@@ -147,14 +251,25 @@ LinearSystem read_linear_system(const std::string& dir) {
     }
   }
 
-  const std::string k_path = join(dir, "K.mtx");
-  s.K = read_with_hint([&] { return read_matrix(k_path); });
-  if (s.K.rows() != dofs || s.K.cols() != dofs)
-    throw Error(k_path + ": " + std::to_string(s.K.rows()) + " x " + std::to_string(s.K.cols()) +
-                ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs) + kHint);
+  const std::string k_path = system_matrix_file(dir, format);
+  if (with_matrix) {
+    s.K = read_with_hint([&] { return binary ? read_petsc_matrix(k_path) : read_matrix(k_path); });
+    if (s.K.rows() != dofs || s.K.cols() != dofs)
+      throw Error(k_path + ": " + std::to_string(s.K.rows()) + " x " + std::to_string(s.K.cols()) +
+                  ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs) + kHint);
+    if (binary) {  // a Matrix Market file says `symmetric` and stores one triangle; a binary one stores both
+      const SparseMatrix Kt = s.K.transpose();
+      const bool same_pattern = std::equal(Kt.outerIndexPtr(), Kt.outerIndexPtr() + dofs + 1, s.K.outerIndexPtr()) &&
+                                std::equal(Kt.innerIndexPtr(), Kt.innerIndexPtr() + Kt.nonZeros(), s.K.innerIndexPtr());
+      if (!same_pattern || !std::equal(Kt.valuePtr(), Kt.valuePtr() + Kt.nonZeros(), s.K.valuePtr()))
+        throw Error(k_path + ": K is not symmetric (the stiffness matrix must be)" + kHint);
+    }
+  } else if (!std::filesystem::exists(k_path)) {
+    throw Error(k_path + ": cannot open for reading (does it exist?)" + kHint);
+  }
 
-  const std::string f_path = join(dir, "f.mtx");
-  s.f = read_with_hint([&] { return read_vector(f_path); });
+  const std::string f_path = join(dir, binary ? "f.petsc" : "f.mtx");
+  s.f = read_with_hint([&] { return binary ? read_petsc_vector(f_path) : read_vector(f_path); });
   if (s.f.size() != dofs)
     throw Error(f_path + ": " + std::to_string(s.f.size()) + " rows, expected 3N = " + std::to_string(dofs) + kHint);
 
@@ -168,16 +283,16 @@ LinearSystem read_linear_system(const std::string& dir) {
     s.fixed_values.push_back(it.value());
   }
 
-  const std::string c_path = join(dir, "coordinates.mtx");
+  const std::string c_path = join(dir, binary ? "coordinates.petsc" : "coordinates.mtx");
   const bool with_coordinates = j.value("coordinates", false);
   if (with_coordinates) {
-    const Eigen::VectorXd c = read_with_hint([&] { return read_vector(c_path); });
+    const Eigen::VectorXd c = read_with_hint([&] { return binary ? read_petsc_vector(c_path) : read_vector(c_path); });
     if (c.size() != 3 * s.np)
       throw Error(c_path + ": " + std::to_string(c.size()) + " rows, expected 3 NP = " + std::to_string(3 * s.np) + kHint);
     s.coordinates.resize(s.np, 3);
     for (long k = 0; k < s.np; ++k) s.coordinates.row(k) = c.segment<3>(3 * k).transpose();
   }
-  check_linear_system(s, dir);
+  if (with_matrix) check_linear_system(s, dir);
   return s;
 }
 

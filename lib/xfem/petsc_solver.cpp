@@ -1,16 +1,29 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/petsc_solver.h"
 
+#include <algorithm>
+
 #include "xfem/error.h"
+#include "xfem/petsc_binary.h"
 
 #if XFEM_HAVE_PETSC
 #include <petscksp.h>
 
 #include <Eigen/QR>
 #include <chrono>
+#include <cmath>
 #endif
 
 namespace xfem {
+
+std::string automatic_backend(long dofs, bool enriched) {
+  return dofs >= (enriched ? kPetscFromDofsEnriched : kPetscFromDofs) ? "petsc" : "cholmod";
+}
+
+int automatic_processes(long dofs, int cores) {
+  const long wanted = (dofs + kDofsPerProcess - 1) / kDofsPerProcess;
+  return static_cast<int>(std::max(1L, std::min<long>(std::max(cores, 1), wanted)));
+}
 
 #if XFEM_HAVE_PETSC
 namespace {
@@ -26,7 +39,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Owned PETSc objects, destroyed on every path.
 struct Objects {
   Mat A = nullptr;
-  Vec x = nullptr, b = nullptr, all = nullptr;
+  Vec x = nullptr, b = nullptr, all = nullptr, pivot = nullptr, residual = nullptr;
   KSP ksp = nullptr;
   MatNullSpace near_null = nullptr;
   VecScatter scatter = nullptr;
@@ -38,6 +51,8 @@ struct Objects {
     if (ksp) KSPDestroy(&ksp);
     if (all) VecDestroy(&all);
     if (x) VecDestroy(&x);
+    if (pivot) VecDestroy(&pivot);
+    if (residual) VecDestroy(&residual);
     if (b) VecDestroy(&b);
     if (A) MatDestroy(&A);
   }
@@ -65,88 +80,199 @@ Eigen::MatrixXd rigid_modes(const LinearSystem& s, bool enriched_translations) {
   return qr.householderQ() * Eigen::MatrixXd::Identity(R.rows(), 6);
 }
 
+// This rank's rows: a contiguous block of whole 3-vectors [r0, r1).
+std::pair<long, long> my_rows(long dofs) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  const long blocks = dofs / 3, mine = blocks / size + (rank < blocks % size ? 1 : 0);
+  const long first = rank * (blocks / size) + std::min<long>(rank, blocks % size);
+  return {3 * first, 3 * (first + mine)};
+}
+
+// Sum over the ranks.
+double global_sum(double local) {
+  double sum = 0;
+  MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  return sum;
+}
+
+PetscErrorCode monitor_iteration(KSP, PetscInt iteration, PetscReal residual, void* context) {
+  const auto& monitor = *static_cast<const std::function<void(long, double)>*>(context);
+  monitor(iteration, residual);
+  return 0;
+}
+
 }  // namespace
+
+struct PetscMatrix::Impl {
+  Mat A = nullptr;
+  ~Impl() {
+    if (A) MatDestroy(&A);
+  }
+};
+
+PetscMatrix::PetscMatrix() : impl_(std::make_unique<Impl>()) {}
+PetscMatrix::~PetscMatrix() = default;
+PetscMatrix::PetscMatrix(PetscMatrix&&) noexcept = default;
+PetscMatrix& PetscMatrix::operator=(PetscMatrix&&) noexcept = default;
 
 PetscSession::PetscSession() {
   check(PetscInitializeNoArguments(), "PetscInitialize");
+  // Failures reach the user as one line from the caller (check() above), not as PETSc's traceback.
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
 }
 
 PetscSession::~PetscSession() { PetscFinalize(); }
 
-PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options) {
-  check_linear_system(s, "petsc_solve");
-  PetscResult r;
-  int rank = 0;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  MPI_Comm_size(PETSC_COMM_WORLD, &r.processes);
-  const auto t_setup = std::chrono::steady_clock::now();
-
-  // 1. Symmetric elimination in place (rows and columns of fixed DOFs -> diagonal).
-  const long n = 3 * s.n;
-  std::vector<double> fixed_value(n, 0.0);
-  std::vector<char> is_fixed(n, 0);
-  for (std::size_t k = 0; k < s.fixed.size(); ++k) {
-    is_fixed[s.fixed[k]] = 1;
-    fixed_value[s.fixed[k]] = s.fixed_values[k];
-  }
-  const Eigen::VectorXd diag = s.K.diagonal();
-  const auto pivot = [&](long d) { return diag[d] > 0 ? diag[d] : 1.0; };
-
-  // 2. This rank's rows: a contiguous block of whole 3-vectors.
-  const long blocks = s.n, mine = blocks / r.processes + (rank < blocks % r.processes ? 1 : 0);
-  const long first_block = rank * (blocks / r.processes) + std::min<long>(rank, blocks % r.processes);
-  const long r0 = 3 * first_block, r1 = r0 + 3 * mine;
-  std::vector<PetscInt> d_nnz(r1 - r0, 0), o_nnz(r1 - r0, 0);
-  for (long row = r0; row < r1; ++row) {
-    if (is_fixed[row]) {
-      d_nnz[row - r0] = 1;
-      continue;
-    }
-    for (SparseMatrix::InnerIterator it(s.K, static_cast<int>(row)); it; ++it)  // column = row (symmetric)
-      if (!is_fixed[it.row()]) ++(it.row() >= r0 && it.row() < r1 ? d_nnz : o_nnz)[row - r0];
-  }
-  Objects o;
+PetscMatrix petsc_load_matrix(const std::string& path, long dofs) {
+  // Every rank checks the header and the size (16 bytes and a seek): MatLoad's own failures
+  // would come without the file's name.
+  const PetscMatrixHeader h = read_petsc_matrix_header(path);
+  if (h.rows != dofs || h.cols != dofs)
+    throw Error(path + ": " + std::to_string(h.rows) + " x " + std::to_string(h.cols) + ", expected 3N x 3N = " +
+                std::to_string(dofs) + " x " + std::to_string(dofs) + " (is this xfem-assemble output?)");
+  PetscMatrix K;
+  Mat& A = K.impl().A;
+  const auto [r0, r1] = my_rows(dofs);
+  PetscViewer viewer = nullptr;
+  struct ViewerGuard {
+    PetscViewer* v;
+    ~ViewerGuard() { if (*v) PetscViewerDestroy(v); }
+  } guard{&viewer};
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  check(MatCreate(comm, &o.A), "MatCreate");
-  check(MatSetSizes(o.A, r1 - r0, r1 - r0, n, n), "MatSetSizes");
-  check(MatSetType(o.A, MATAIJ), "MatSetType");
-  check(MatSetBlockSize(o.A, 3), "MatSetBlockSize");
-  check(MatSeqAIJSetPreallocation(o.A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  check(MatMPIAIJSetPreallocation(o.A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+  check(PetscViewerCreate(comm, &viewer), "PetscViewerCreate");
+  check(PetscViewerSetType(viewer, PETSCVIEWERBINARY), "PetscViewerSetType");
+  check(PetscViewerFileSetMode(viewer, FILE_MODE_READ), "PetscViewerFileSetMode");
+  check(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE), "PetscViewerBinarySetSkipInfo");
+  check(PetscViewerFileSetName(viewer, path.c_str()), ("opening " + path).c_str());
+  check(MatCreate(comm, &A), "MatCreate");
+  check(MatSetSizes(A, r1 - r0, r1 - r0, dofs, dofs), "MatSetSizes");
+  check(MatSetType(A, MATAIJ), "MatSetType");
+  check(MatSetBlockSize(A, 3), "MatSetBlockSize");
+  if (MatLoad(A, viewer) != 0) throw Error(path + ": PETSc's MatLoad failed (corrupt row lengths or column indices?)");
+  PetscReal norm = 0;
+  check(MatNorm(A, NORM_FROBENIUS, &norm), "MatNorm");
+  if (!std::isfinite(norm)) throw Error(path + ": K holds a non-finite value (is this xfem-assemble output?)");
+  return K;
+}
+
+PetscMatrix petsc_matrix(const SparseMatrix& K_full) {
+  const long dofs = K_full.rows();
+  const auto [r0, r1] = my_rows(dofs);
+  std::vector<PetscInt> d_nnz(r1 - r0, 0), o_nnz(r1 - r0, 0);
+  for (long row = r0; row < r1; ++row)
+    for (SparseMatrix::InnerIterator it(K_full, static_cast<int>(row)); it; ++it)  // column = row (symmetric)
+      ++(it.row() >= r0 && it.row() < r1 ? d_nnz : o_nnz)[row - r0];
+  PetscMatrix K;
+  Mat& A = K.impl().A;
+  check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
+  check(MatSetSizes(A, r1 - r0, r1 - r0, dofs, dofs), "MatSetSizes");
+  check(MatSetType(A, MATAIJ), "MatSetType");
+  check(MatSetBlockSize(A, 3), "MatSetBlockSize");
+  check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+  check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
   std::vector<PetscInt> cols;
-  std::vector<PetscScalar> vals;
-  check(MatCreateVecs(o.A, &o.x, &o.b), "MatCreateVecs");
-  PetscScalar* bb = nullptr;
-  check(VecGetArray(o.b, &bb), "VecGetArray");
   for (long row = r0; row < r1; ++row) {
-    cols.clear();
-    vals.clear();
-    double rhs = s.f[row];
-    if (is_fixed[row]) {
-      cols.push_back(static_cast<PetscInt>(row));
-      vals.push_back(pivot(row));
-      rhs = pivot(row) * fixed_value[row];
-    } else {
-      for (SparseMatrix::InnerIterator it(s.K, static_cast<int>(row)); it; ++it) {
-        if (is_fixed[it.row()]) {
-          rhs -= it.value() * fixed_value[it.row()];
-        } else {
-          cols.push_back(static_cast<PetscInt>(it.row()));
-          vals.push_back(it.value());
-        }
-      }
-    }
-    bb[row - r0] = rhs;
+    const int begin = K_full.outerIndexPtr()[row], end = K_full.outerIndexPtr()[row + 1];
+    cols.assign(K_full.innerIndexPtr() + begin, K_full.innerIndexPtr() + end);
     const PetscInt prow = static_cast<PetscInt>(row);
-    check(MatSetValues(o.A, 1, &prow, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), INSERT_VALUES),
+    check(MatSetValues(A, 1, &prow, end - begin, cols.data(), K_full.valuePtr() + begin, INSERT_VALUES),
           "MatSetValues");
   }
+  check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  return K;
+}
+
+Eigen::VectorXd petsc_diagonal(PetscMatrix& K) {
+  Vec d = nullptr, all = nullptr;
+  VecScatter scatter = nullptr;
+  struct Guard {
+    Vec *d, *all;
+    VecScatter* s;
+    ~Guard() {
+      if (*s) VecScatterDestroy(s);
+      if (*all) VecDestroy(all);
+      if (*d) VecDestroy(d);
+    }
+  } guard{&d, &all, &scatter};
+  check(MatCreateVecs(K.impl().A, nullptr, &d), "MatCreateVecs");
+  check(MatGetDiagonal(K.impl().A, d), "MatGetDiagonal");
+  check(VecScatterCreateToAll(d, &scatter, &all), "VecScatterCreateToAll");
+  check(VecScatterBegin(scatter, d, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(scatter, d, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  PetscInt n = 0;
+  check(VecGetSize(all, &n), "VecGetSize");
+  const PetscScalar* a = nullptr;
+  check(VecGetArrayRead(all, &a), "VecGetArrayRead");
+  Eigen::VectorXd diag = Eigen::Map<const Eigen::VectorXd>(a, n);
+  check(VecRestoreArrayRead(all, &a), "VecRestoreArrayRead");
+  return diag;
+}
+
+PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options) {
+  check_linear_system(s, "petsc_solve");
+  return petsc_solve(petsc_matrix(s.K), s, options);
+}
+
+PetscResult petsc_solve(PetscMatrix&& K, const LinearSystem& s, const PetscSolveOptions& options) {
+  PetscResult r;
+  MPI_Comm_size(PETSC_COMM_WORLD, &r.processes);
+  const auto t_setup = std::chrono::steady_clock::now();
+  Objects o;
+  o.A = K.impl().A;  // taken over: the elimination below changes it
+  K.impl().A = nullptr;
+  const long n = 3 * s.n;
+  PetscInt global_rows = 0;
+  check(MatGetSize(o.A, &global_rows, nullptr), "MatGetSize");
+  if (global_rows != n || s.f.size() != n)
+    throw Error("petsc_solve: K has " + std::to_string(global_rows) + " rows and f " + std::to_string(s.f.size()) +
+                ", expected 3N = " + std::to_string(n));
+  const auto [r0, r1] = my_rows(n);
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+
+  // 1. Symmetric elimination in place: rows and columns of fixed DOFs -> their diagonal K_dd
+  //    (1 where K_dd <= 0), b = f_f - K_fc u_c on the free rows, K_dd u_d on the fixed ones.
+  std::vector<char> is_fixed(r1 - r0, 0);
+  std::vector<PetscInt> my_fixed;
+  check(MatCreateVecs(o.A, &o.x, &o.b), "MatCreateVecs");
+  Vec& pivot = o.pivot;
+  check(VecDuplicate(o.x, &pivot), "VecDuplicate");
+  check(MatGetDiagonal(o.A, pivot), "MatGetDiagonal");
+  PetscScalar *xx = nullptr, *bb = nullptr, *pp = nullptr;
+  check(VecGetArray(o.x, &xx), "VecGetArray");
+  check(VecGetArray(o.b, &bb), "VecGetArray");
+  for (long row = r0; row < r1; ++row) xx[row - r0] = 0, bb[row - r0] = s.f[row];
+  for (std::size_t k = 0; k < s.fixed.size(); ++k)
+    if (s.fixed[k] >= r0 && s.fixed[k] < r1) {
+      my_fixed.push_back(static_cast<PetscInt>(s.fixed[k]));
+      is_fixed[s.fixed[k] - r0] = 1;
+      xx[s.fixed[k] - r0] = s.fixed_values[k];
+    }
+  check(VecRestoreArray(o.x, &xx), "VecRestoreArray");
   check(VecRestoreArray(o.b, &bb), "VecRestoreArray");
-  check(MatAssemblyBegin(o.A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  check(MatAssemblyEnd(o.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(MatSetOption(o.A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE), "MatSetOption");
+  check(MatZeroRowsColumns(o.A, static_cast<PetscInt>(my_fixed.size()), my_fixed.data(), 1.0, o.x, o.b),
+        "MatZeroRowsColumns");
+  check(VecGetArray(pivot, &pp), "VecGetArray");
+  check(VecGetArray(o.b, &bb), "VecGetArray");
+  double b_free = 0;  // ||f_f - K_fc u_c||^2 on this rank, the residual's scale
+  for (long row = r0; row < r1; ++row) {
+    if (is_fixed[row - r0]) {
+      if (!(pp[row - r0] > 0)) pp[row - r0] = 1.0;
+      bb[row - r0] *= pp[row - r0];  // MatZeroRowsColumns put 1 * u_d there
+    } else {
+      b_free += bb[row - r0] * bb[row - r0];
+    }
+  }
+  check(VecRestoreArray(o.b, &bb), "VecRestoreArray");
+  check(VecRestoreArray(pivot, &pp), "VecRestoreArray");
+  check(MatDiagonalSet(o.A, pivot, INSERT_VALUES), "MatDiagonalSet");
   check(MatSetOption(o.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
+  b_free = global_sum(b_free);
 
   // 3. Near-null space: the rigid-body modes, the coarse space GAMG must represent. With the
   //    field split, GAMG sees only the original block: the modes restricted to it (still
@@ -171,8 +297,8 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   }
   if (options.near_null_space == "rigid" || options.near_null_space == "rigid-enriched") {
     if (s.coordinates.size() == 0)
-      throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.mtx in the "
-                  "system directory); use --near-null-space none to go without");
+      throw Error("the PETSc backend's rigid-body near-null space needs the mesh coordinates (coordinates.petsc or "
+                  "coordinates.mtx in the system directory); use --near-null-space none to go without");
     const Eigen::MatrixXd R = rigid_modes(s, options.near_null_space == "rigid-enriched" && !split);
     o.modes.resize(6, nullptr);
     for (int m = 0; m < 6; ++m) {
@@ -230,6 +356,10 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
   }
   check(KSPSetNormType(o.ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   check(KSPSetTolerances(o.ksp, options.rtol, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
+  if (options.monitor)
+    check(KSPMonitorSet(o.ksp, monitor_iteration, const_cast<std::function<void(long, double)>*>(&options.monitor),
+                        nullptr),
+          "KSPMonitorSet");
   check(KSPSetFromOptions(o.ksp), "KSPSetFromOptions");
   check(KSPSetUp(o.ksp), split ? "KSPSetUp (field split)" : "KSPSetUp (GAMG setup)");
   if (split) {  // the splits' own setup (GAMG hierarchy, factorization) belongs to the setup time too
@@ -258,16 +388,37 @@ PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options)
                 " iterations): the system may be singular (a loose piece, tiny enriched support) or need more "
                 "iterations (--max-iterations)");
 
-  // 5. Every rank gets the whole solution; the fixed DOFs carry their values exactly.
-  check(VecScatterCreateToAll(o.x, &o.scatter, &o.all), "VecScatterCreateToAll");
+  // 5. The residual of the free equations: A x - b there is (K u - f)_f, the fixed columns
+  //    having moved into b.
+  check(VecDuplicate(o.b, &o.residual), "VecDuplicate");
+  check(MatMult(o.A, o.x, o.residual), "MatMult");
+  check(VecAXPY(o.residual, -1.0, o.b), "VecAXPY");
+  const PetscScalar* ra = nullptr;
+  check(VecGetArrayRead(o.residual, &ra), "VecGetArrayRead");
+  double res_free = 0;
+  for (long row = r0; row < r1; ++row)
+    if (!is_fixed[row - r0]) res_free += ra[row - r0] * ra[row - r0];
+  check(VecRestoreArrayRead(o.residual, &ra), "VecRestoreArrayRead");
+  res_free = global_sum(res_free);
+  r.relative_residual = b_free > 0 ? std::sqrt(res_free / b_free) : std::sqrt(res_free);
+
+  // 6. Rank 0 gets the whole solution; the fixed DOFs carry their values exactly.
+  check(VecScatterCreateToZero(o.x, &o.scatter, &o.all), "VecScatterCreateToZero");
   check(VecScatterBegin(o.scatter, o.x, o.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
   check(VecScatterEnd(o.scatter, o.x, o.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-  const PetscScalar* xa = nullptr;
-  check(VecGetArrayRead(o.all, &xa), "VecGetArrayRead");
-  r.u = Eigen::Map<const Eigen::VectorXd>(xa, n);
-  check(VecRestoreArrayRead(o.all, &xa), "VecRestoreArrayRead");
-  for (std::size_t k = 0; k < s.fixed.size(); ++k) r.u[s.fixed[k]] = s.fixed_values[k];
-  if (!r.u.allFinite()) throw Error("PETSc returned a non-finite solution (the system is singular)");
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  int finite = 1;
+  if (rank == 0) {
+    const PetscScalar* xa = nullptr;
+    check(VecGetArrayRead(o.all, &xa), "VecGetArrayRead");
+    r.u = Eigen::Map<const Eigen::VectorXd>(xa, n);
+    check(VecRestoreArrayRead(o.all, &xa), "VecRestoreArrayRead");
+    for (std::size_t k = 0; k < s.fixed.size(); ++k) r.u[s.fixed[k]] = s.fixed_values[k];
+    finite = r.u.allFinite() && std::isfinite(r.relative_residual);
+  }
+  MPI_Bcast(&finite, 1, MPI_INT, 0, comm);
+  if (!finite) throw Error("PETSc returned a non-finite solution (the system is singular)");
   return r;
 }
 
@@ -278,6 +429,17 @@ PetscSession::PetscSession() {
               "and rebuild");
 }
 PetscSession::~PetscSession() = default;
+struct PetscMatrix::Impl {};
+PetscMatrix::PetscMatrix() = default;
+PetscMatrix::~PetscMatrix() = default;
+PetscMatrix::PetscMatrix(PetscMatrix&&) noexcept = default;
+PetscMatrix& PetscMatrix::operator=(PetscMatrix&&) noexcept = default;
+PetscMatrix petsc_load_matrix(const std::string&, long) { throw Error("this build has no PETSc: use --backend cholmod"); }
+PetscMatrix petsc_matrix(const SparseMatrix&) { throw Error("this build has no PETSc: use --backend cholmod"); }
+Eigen::VectorXd petsc_diagonal(PetscMatrix&) { throw Error("this build has no PETSc: use --backend cholmod"); }
+PetscResult petsc_solve(PetscMatrix&&, const LinearSystem&, const PetscSolveOptions&) {
+  throw Error("this build has no PETSc: use --backend cholmod");
+}
 PetscResult petsc_solve(const LinearSystem&, const PetscSolveOptions&) {
   throw Error("this build has no PETSc: use --backend cholmod");
 }

@@ -1,12 +1,26 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "xfem/linear_system.h"
 
 namespace xfem {
+
+/// The automatic backend of xfem-solve (docs/PERFORMANCE.md, "Choosing the backend"): "cholmod"
+/// below a size measured on this problem class, "petsc" above it (CG + GAMG on MPI ranks). Cut
+/// systems (with enriched DOFs) need about twice the CG iterations of uncut ones, so CHOLMOD
+/// stays the quicker choice up to a larger size there.
+constexpr long kPetscFromDofs = 100000;
+constexpr long kPetscFromDofsEnriched = 150000;
+std::string automatic_backend(long dofs, bool enriched);
+
+/// The automatic number of PETSc processes: one per kDofsPerProcess DOFs, at least 1, at most `cores`.
+constexpr long kDofsPerProcess = 60000;
+int automatic_processes(long dofs, int cores);
 
 /// PETSc and MPI for the lifetime of the object (PetscInitialize / PetscFinalize), so that
 /// `mpirun -np P xfem-solve --backend petsc` runs one process per rank. PETSc options come from
@@ -42,27 +56,61 @@ struct PetscSolveOptions {
   /// DOFs always gets "gamg". Throws xfem::Error on another value. PETSc options in PETSC_OPTIONS (prefixes -fieldsplit_original_,
   /// -fieldsplit_enriched_, -pc_fieldsplit_type) override these choices.
   std::string enriched_block = "gamg";
+  /// Called on every rank after each CG iteration with its number and the residual norm
+  /// ||b - A x|| (newtons); for progress reports. May be empty.
+  std::function<void(long iteration, double residual)> monitor;
 };
 
 struct PetscResult {
-  Eigen::VectorXd u;               ///< 3N, full solution (constrained DOFs at their values), on every rank
+  Eigen::VectorXd u;               ///< 3N, full solution (constrained DOFs at their values), on rank 0 only (empty elsewhere)
   long iterations = 0;
   std::string converged_reason;    ///< PETSc's KSPConvergedReason name
   std::string preconditioner;      ///< "GAMG" or "fieldsplit (GAMG | Cholesky)": what was used
   int processes = 1;
   double setup_seconds = 0;        ///< matrix distribution + GAMG setup
   double solve_seconds = 0;        ///< CG iterations
+  /// ||(K u - f)_f|| / ||f_f - K_fc u_c|| over the free DOFs (as xfem::relative_residual), on every rank
+  double relative_residual = 0;
 };
 
-/// Solves `system` (its fixed DOFs at their values) with CG preconditioned by GAMG (or, with
-/// options.enriched_block "direct" and enriched DOFs present, GAMG on the original block and a
-/// direct solve on the enriched block), every rank
-/// holding the whole system and inserting its block of rows (3-row blocks: N 3-vectors). The
-/// Dirichlet DOFs are eliminated symmetrically in place: their rows and columns become the
-/// diagonal K_dd, the right-hand side K_dd u_d there and f_f - K_fc u_c elsewhere, so A stays
-/// SPD with block size 3 (what GAMG's aggregation wants). Needs a live PetscSession.
+/// K distributed over the ranks of PETSC_COMM_WORLD: each rank holds a contiguous block of rows
+/// made of whole 3-vectors (3-row blocks, AIJ with block size 3), the fixed DOFs still in.
+class PetscMatrix {
+ public:
+  PetscMatrix();
+  ~PetscMatrix();
+  PetscMatrix(PetscMatrix&&) noexcept;
+  PetscMatrix& operator=(PetscMatrix&&) noexcept;
+  struct Impl;
+  Impl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Loads K from a PETSc binary file (MatLoad: every rank reads only its rows) of 3N rows. Checks
+/// the header and the file size first, and that K holds only finite values; throws xfem::Error
+/// naming `path` otherwise. Needs a live PetscSession.
+PetscMatrix petsc_load_matrix(const std::string& path, long dofs);
+
+/// Distributes a K every rank holds whole (both triangles), e.g. read from Matrix Market.
+PetscMatrix petsc_matrix(const SparseMatrix& K);
+
+/// The diagonal of K, whole, on every rank (for the checks of enriched DOFs without support).
+Eigen::VectorXd petsc_diagonal(PetscMatrix& K);
+
+/// Solves K u = f, K given distributed in `K` (consumed: the elimination works in place), f,
+/// the fixed DOFs and coordinates from `system` (its K is not used), with CG preconditioned by
+/// GAMG (or, with options.enriched_block "direct" and enriched DOFs present, GAMG on the original
+/// block and a direct solve on the enriched block). The Dirichlet DOFs are eliminated
+/// symmetrically in place (MatZeroRowsColumns): their rows and columns become the diagonal K_dd,
+/// the right-hand side K_dd u_d there and f_f - K_fc u_c elsewhere, so A stays SPD with block
+/// size 3 (what GAMG's aggregation wants). Needs a live PetscSession.
 /// Throws xfem::Error naming the reason when CG does not converge (diverged, indefinite
 /// preconditioner or matrix, iteration limit).
+PetscResult petsc_solve(PetscMatrix&& K, const LinearSystem& system, const PetscSolveOptions& options);
+
+/// The same with `system.K` (whole on every rank) distributed first.
 PetscResult petsc_solve(const LinearSystem& system, const PetscSolveOptions& options);
 
 }  // namespace xfem

@@ -21,7 +21,7 @@ out/xgrid-%/mesh.vtu:
 	$(BIN)/xfem-mesh $(QUIET) box --cells $(subst x, ,$*) --hi 0.03 0.06 0.2 -o $@
 out/x%/classified.vtu: out/x%/mesh.vtu out/cut.vtp
 	$(BIN)/xfem-classify $(QUIET) $< --cut out/cut.vtp --summary $(@D)/classify.json -o $@
-out/x%/system/K.mtx: out/x%/enriched.vtu out/cut.vtp $(PROBLEM)
+out/x%/system/system.json: out/x%/enriched.vtu out/cut.vtp $(PROBLEM)
 	$(BIN)/xfem-assemble $(QUIET) $< --cut out/cut.vtp --problem $(PROBLEM) --points $(POINTS) -o $(@D)
 out/x%/rms.json: out/x%/u.mtx $(REF)/enriched.vtu $(REF)/u.mtx
 	$(BIN)/xfem-rmserror $(QUIET) $(@D)/enriched.vtu --cut out/cut.vtp --solution $< \
@@ -35,7 +35,7 @@ out/cg-%/mesh.vtu:
 	$(BIN)/xfem-mesh $(QUIET) box --cells $(subst x, ,$*) --hi 0.03 0.06 0.2 --beam-cut -o $@
 out/cg-%/classified.vtu: out/cg-%/mesh.vtu
 	$(BIN)/xfem-classify $(QUIET) $< --summary $(@D)/classify.json -o $@
-out/cg-%/system/K.mtx: out/cg-%/enriched.vtu $(PROBLEM)
+out/cg-%/system/system.json: out/cg-%/enriched.vtu $(PROBLEM)
 	$(BIN)/xfem-assemble $(QUIET) $< --problem $(PROBLEM) -o $(@D)
 out/cg-%/rms.json: out/cg-%/u.mtx out/cg-%/classified.vtu $(REF)/enriched.vtu $(REF)/u.mtx
 	$(BIN)/xfem-rmserror $(QUIET) $(@D)/classified.vtu --solution $< \
@@ -46,7 +46,7 @@ out/cg-%/probe.csv: out/cg-%/u.mtx out/cg-%/classified.vtu $(PROBES)
 # Shared by every family.
 out/%/enriched.vtu: out/%/classified.vtu
 	$(BIN)/xfem-enrich $(QUIET) $< -o $@
-out/%/u.mtx: out/%/system/K.mtx
+out/%/u.mtx: out/%/system/system.json
 	$(BIN)/xfem-solve $(QUIET) $(<D) -o $@ --report $(@D)/solve.json
 
 .SECONDARY:

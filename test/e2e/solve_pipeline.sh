@@ -16,7 +16,8 @@ json_number() { sed -n "s/.*\"$1\": *\([^,]*\).*/\1/p" "$2"; }
 "$B/xfem-mesh" -q cut-rect --beam-cut -o "$S/cut.vtp" || fail "xfem-mesh cut-rect"
 "$B/xfem-classify" -q "$S/box.vtu" -o "$S/classified.vtu" || fail "classify"
 "$B/xfem-enrich" -q "$S/classified.vtu" -o "$S/enriched.vtu" || fail "enrich"
-"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/sys" || fail "assemble"
+# (Matrix Market, --format mtx: the checks below read coordinates.mtx with awk.)
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/sys" --format mtx || fail "assemble"
 grep -q '"n": 588,' "$S/sys/system.json" || fail "expected N = NP = 4*7*21 = 588: $(cat "$S/sys/system.json")"
 "$B/xfem-solve" -q "$S/sys" -o "$S/u.mtx" --report "$S/solve.json" || fail "solve"
 res=$(json_number relative_residual "$S/solve.json")

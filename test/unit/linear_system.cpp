@@ -2,10 +2,12 @@
 #include "xfem/linear_system.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "xfem/error.h"
+#include "xfem/petsc_binary.h"
 
 namespace {
 
@@ -43,18 +45,22 @@ void overwrite(const std::string& path, const std::string& text) { std::ofstream
 
 }  // namespace
 
-TEST_CASE("linear_system: a system round-trips exactly through its directory", "[linear_system]") {
+TEST_CASE("linear_system: a system round-trips exactly through its directory, in both formats", "[linear_system]") {
   const auto dir = scratch_dir("system_roundtrip");
   const xfem::LinearSystem s = small_system();
-  xfem::write_linear_system(s, dir, "test 0");
-  for (const char* f : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "system.json"})
+  const bool binary = GENERATE(true, false);
+  const std::string ext = binary ? ".petsc" : ".mtx";
+  xfem::write_linear_system(s, dir, "test 0", binary ? xfem::SystemFormat::Petsc : xfem::SystemFormat::MatrixMarket);
+  for (const std::string f : {"K" + ext, "f" + ext, std::string("dirichlet.mtx"), "coordinates" + ext,
+                              std::string("system.json")})
     CHECK(fs::exists(fs::path(dir) / f));
+  CHECK(xfem::system_format(dir) == (binary ? xfem::SystemFormat::Petsc : xfem::SystemFormat::MatrixMarket));
   const xfem::LinearSystem r = xfem::read_linear_system(dir);
   CHECK(r.np == 1);
   CHECK(r.ns == 1);
   CHECK(r.nb == 0);
   CHECK(r.n == 2);
-  // Shortest round-trip decimal form: every bit comes back, and K is the full symmetric matrix.
+  // Binary or the shortest round-trip decimal form: every bit comes back, K as the full symmetric matrix.
   CHECK((r.K - s.K).norm() == 0.0);
   CHECK(r.f == s.f);
   CHECK(r.fixed == s.fixed);
@@ -71,6 +77,7 @@ TEST_CASE("linear_system: coordinates and pieces are optional", "[linear_system]
   s.coordinates.resize(0, 0);
   s.pieces.clear();
   xfem::write_linear_system(s, dir, "test 0");
+  CHECK_FALSE(fs::exists(fs::path(dir) / "coordinates.petsc"));
   CHECK_FALSE(fs::exists(fs::path(dir) / "coordinates.mtx"));
   const xfem::LinearSystem r = xfem::read_linear_system(dir);
   CHECK(r.coordinates.size() == 0);
@@ -81,21 +88,27 @@ TEST_CASE("linear_system: a missing directory or file is named", "[linear_system
   using Catch::Matchers::Contains;
   const auto dir = scratch_dir("system_missing");
   CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("no such directory"));
-  xfem::write_linear_system(small_system(), dir, "test 0");
+  xfem::write_linear_system(small_system(), dir, "test 0", xfem::SystemFormat::MatrixMarket);
   fs::remove(fs::path(dir) / "f.mtx");
   CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("f.mtx: cannot open for reading"));
+  xfem::write_linear_system(small_system(), dir, "test 0");
+  fs::remove(fs::path(dir) / "K.petsc");
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("K.petsc: cannot open for reading"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir, false), Contains("K.petsc: cannot open for reading"));
   fs::remove(fs::path(dir) / "system.json");
-  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("system.json: cannot open for reading"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir),
+                    Contains(dir + ": no system.json") && Contains("the directory is incomplete"));
 }
 
 TEST_CASE("linear_system: a size mismatch between the files is an error", "[linear_system]") {
   using Catch::Matchers::Contains;
   const auto dir = scratch_dir("system_mismatch");
-  xfem::write_linear_system(small_system(), dir, "test 0");
+  const auto mtx = xfem::SystemFormat::MatrixMarket;
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx);
   overwrite((fs::path(dir) / "f.mtx").string(), "%%MatrixMarket matrix array real general\n3 1\n1\n2\n3\n");
   CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("f.mtx: 3 rows, expected 3N = 6"));
 
-  xfem::write_linear_system(small_system(), dir, "test 0");
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx);
   overwrite((fs::path(dir) / "K.mtx").string(), "%%MatrixMarket matrix coordinate real symmetric\n3 3 1\n1 1 1\n");
   CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("K.mtx: 3 x 3, expected 3N x 3N = 6 x 6"));
 
@@ -120,4 +133,66 @@ TEST_CASE("linear_system: a fixed DOF out of range is an error", "[linear_system
   overwrite((fs::path(dir) / "dirichlet.mtx").string(),
             "%%MatrixMarket matrix coordinate real general\n9 1 1\n7 1 0.5\n");
   CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("dirichlet.mtx: 9 x 1, expected 3N x 1 = 6 x 1"));
+}
+
+TEST_CASE("linear_system: a binary K that is not symmetric is refused", "[linear_system]") {
+  using Catch::Matchers::Contains;
+  const auto dir = scratch_dir("system_asymmetric");
+  xfem::write_linear_system(small_system(), dir, "test 0");
+  const std::string path = (fs::path(dir) / "K.petsc").string();
+  const long nnz = xfem::read_petsc_matrix_header(path).nonzeros;
+  // Change the last (least significant) byte of row 0's second value, K(0,1); K(1,0) stays.
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  f.seekp(16 + 4 * 6 + 4 * nnz + 8 * 1 + 7);
+  f.put(static_cast<char>(0x01));
+  f.close();
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("K.petsc: K is not symmetric"));
+}
+
+TEST_CASE("linear_system: the directory appears whole or not at all", "[linear_system]") {
+  using Catch::Matchers::Contains;
+  const auto dir = scratch_dir("system_atomic");
+  const fs::path parent = fs::path(dir).parent_path();
+  const auto leftovers = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(parent))
+      n += e.path().filename().string().rfind(".system_atomic", 0) == 0;
+    return n;
+  };
+  // A write that fails (a non-finite value in K) leaves no directory and no temporary one.
+  xfem::LinearSystem bad = small_system();
+  bad.K.coeffRef(3, 3) = std::nan("");
+  CHECK_THROWS_WITH(xfem::write_linear_system(bad, dir, "test 0"), Contains("non-finite"));
+  CHECK_FALSE(fs::exists(dir));
+  CHECK(leftovers() == 0);
+
+  // Over an existing system: a failed write leaves the old one as it was ...
+  xfem::write_linear_system(small_system(), dir, "test 0", xfem::SystemFormat::MatrixMarket);
+  CHECK_THROWS(xfem::write_linear_system(bad, dir, "test 0"));
+  CHECK(fs::exists(fs::path(dir) / "K.mtx"));
+  CHECK((xfem::read_linear_system(dir).K - small_system().K).norm() == 0.0);  // small_system's K has both triangles
+  CHECK(leftovers() == 0);
+  // ... a successful one replaces it whole (no stale K.mtx next to K.petsc).
+  xfem::write_linear_system(small_system(), dir, "test 0");
+  CHECK(fs::exists(fs::path(dir) / "K.petsc"));
+  CHECK_FALSE(fs::exists(fs::path(dir) / "K.mtx"));
+  CHECK(leftovers() == 0);
+
+  // An interrupted write (simulated: a temporary directory without system.json left behind) does
+  // not disturb the system, and a directory without the marker is refused.
+  fs::create_directory(parent / ".system_atomic.tmp1");
+  CHECK_NOTHROW(xfem::read_linear_system(dir));
+  CHECK_THROWS_WITH(xfem::read_linear_system((parent / ".system_atomic.tmp1").string()), Contains("no system.json"));
+  fs::remove_all(parent / ".system_atomic.tmp1");
+
+  // A directory holding something else is not replaced.
+  const auto other = scratch_dir("not_a_system");
+  fs::create_directories(other);
+  overwrite((fs::path(other) / "notes.txt").string(), "mine\n");
+  CHECK_THROWS_WITH(xfem::write_linear_system(small_system(), other, "test 0"),
+                    Contains("holds notes.txt, which is not part of a system directory"));
+  CHECK(fs::exists(fs::path(other) / "notes.txt"));
+  // A trailing slash names the same directory.
+  xfem::write_linear_system(small_system(), dir + "/", "test 0");
+  CHECK(fs::exists(fs::path(dir) / "system.json"));
 }
