@@ -48,6 +48,11 @@ int main(int argc, char** argv) {
   app.add_option("--height", height, "picture height, pixels")->check(CLI::Range(64, 8192));
   app.add_option("--edges", edges, "element edges in the picture: auto (light grey below 20,000 visible faces, "
                                    "default), on or off")->check(CLI::IsMember({"auto", "on", "off"}));
+  double wound_offset = 1e-4;
+  app.add_option("--wound-offset", wound_offset, "move the wound (--faces) this fraction of the body's diagonal out of "
+                                                 "its pieces so that it does not z-fight with the cut faces of the "
+                                                 "output (dimensionless, default 1e-4; 0 keeps the cut's exact geometry)")
+      ->check(CLI::Range(0.0, 0.1));
   bool no_edges = false;
   app.add_flag("--no-edges", no_edges, "same as --edges off");
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
@@ -84,7 +89,7 @@ int main(int argc, char** argv) {
       xfem::cli::warn(std::to_string(split.degenerate_faces) + " faces with one split edge but no front point: "
                       "split at that edge only (the cut grazes a node or the front misses the face)");
     xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
-                                                  problem.nu, xfem::cli::progress("evaluating"));
+                                                  problem.nu, xfem::cli::progress("evaluating"), wound_offset);
     if (!reactions_path.empty()) body.volume.point_data["reaction"] = xfem::reaction_array(reactions, em.np, split.points.rows());
     if (em.cut) {
       const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),

@@ -14,7 +14,6 @@ namespace xfem {
 namespace {
 // Wound offset along its outward normal, as a fraction of the body's bounding-box diagonal: far
 // below what a picture resolves (0.02 mm on the 0.2 m beam), far above depth-buffer resolution.
-constexpr double kWoundOffset = 1e-4;
 }  // namespace
 
 DisplacementField xfem_displacement(const EnrichedMesh& em, const Eigen::VectorXd& u) {
@@ -34,7 +33,7 @@ double von_mises(const Eigen::Matrix3d& s) {
 }
 
 DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
-                           double E, double nu, const std::function<void(double)>& progress) {
+                           double E, double nu, const std::function<void(double)>& progress, double wound_offset) {
   if (!(E > 0)) throw Error("deformed_body: Young's modulus E must be positive, got " + std::to_string(E));
   if (!(nu > -1 && nu < 0.5)) throw Error("deformed_body: Poisson's ratio nu must be in (-1, 0.5), got " + std::to_string(nu));
   const Lame lm = lame(E, nu);
@@ -111,7 +110,7 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
     for (int c = 0; c < 3; ++c) wdisp.values[3 * i + c] = disp.values[3 * used[i] + c];
   }
   // Shown together with deformed.vtu, whose outer surface holds the same faces, the wound would
-  // z-fight; moved by kWoundOffset x the body's diagonal along its faces' outward normal (into the
+  // z-fight; moved by wound_offset x the body's diagonal along its faces' outward normal (into the
   // opening) it is drawn just in front of them. The area-weighted normals of a front point's two
   // faces cancel: it stays where it is, on the front.
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(w.points.rows(), 3);
@@ -126,7 +125,7 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
     }
   }
   const double offset =
-      np > 0 ? kWoundOffset * (split.points.colwise().maxCoeff() - split.points.colwise().minCoeff()).norm() : 0;
+      np > 0 ? wound_offset * (split.points.colwise().maxCoeff() - split.points.colwise().minCoeff()).norm() : 0;
   for (Eigen::Index i = 0; i < w.points.rows(); ++i) {
     const double length = normal.row(i).norm();
     if (length > 0.5 * magnitude[i]) w.points.row(i) += offset / length * normal.row(i);

@@ -39,8 +39,12 @@ struct DeformedBody {
 /// (Hooke: sigma = lambda tr(eps) I + 2 mu eps, lambda and mu of DESIGN.md). `cut_class` is per
 /// input tet. `progress` (optional) is called with the fraction done. Throws xfem::Error for a bad
 /// E or nu, or a non-finite displacement (naming the point and its input tet).
+/// `wound_offset`: the wound's points are moved by this fraction of the body's diagonal along its
+/// faces' outward normal, so that it does not z-fight with deformed.vtu's cut faces (0 keeps the
+/// cut's exact geometry, e.g. to measure its area).
 DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
-                           double E, double nu, const std::function<void(double)>& progress = {});
+                           double E, double nu, const std::function<void(double)>& progress = {},
+                           double wound_offset = 1e-4);
 
 /// How far the cut opened: over the points of the cut present once per side (same position),
 /// the jump d = u(x, +1) - u(x, -1) and its normal part d . n(x), n the cut's unit normal there

@@ -401,7 +401,7 @@ def cmd_check(args):
     sheets = sheets_of(cpts, ctris)
     d = read_vtk_xml(args.deformed)
     pts, cells = d["points"], d["cells"]
-    side = [int(s) for s in d["cell"]["side"]]
+    side = [int(s) for s in d["cell"]["piece_side" if "piece_side" in d["cell"] else "side"]]
     vol = {-1: 0.0, 0: 0.0, 1: 0.0}
     for c, s in zip(cells, side):
         vol[s] += tet_volume([pts[i] for i in c])

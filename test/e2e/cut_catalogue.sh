@@ -90,7 +90,7 @@ run_case() {  # run_case <mesh s|u> <cut name>
   stage enrich "$B/xfem-enrich" "$d/classified.vtu" -o "$d/enriched.vtu" &&
   stage assemble "$B/xfem-assemble" "$d/enriched.vtu" --cut "$cut" --problem "$problem" -o "$d/system" &&
   stage solve "$B/xfem-solve" "$d/system" -o "$d/u.mtx" --report "$d/solve.json" &&
-  stage visualize "$B/xfem-visualize" "$d/enriched.vtu" --cut "$cut" --solution "$d/u.mtx" --problem "$problem" \
+  stage visualize "$B/xfem-visualize" "$d/enriched.vtu" --cut "$cut" --solution "$d/u.mtx" --problem "$problem" --wound-offset 0 \
         -o "$d/deformed.vtu" --faces "$d/wound.vtp" &&
   stage rmserror "$B/xfem-rmserror" "$d/enriched.vtu" --cut "$cut" --solution "$d/u.mtx" --exact "$exact" -o "$d/error.json"
   local rc=$?
