@@ -7,7 +7,16 @@ namespace xfem {
 
 BranchValues branch_functions(const CrackTipFrame& frame, const Eigen::Vector3d& x, int side) {
   const Eigen::Vector3d abc = frame.R.transpose() * (x - frame.origin);
-  const double xa = abc[0], xb = abc[1];
+  TipCoordinates tc;
+  tc.xa = abc[0];
+  tc.xb = abc[1];
+  // grad_x = R grad_abc because x_abc = R^T (x - origin): rows of R^T.
+  tc.grad = frame.R.transpose().topRows<2>();
+  return branch_functions(tc, side);
+}
+
+BranchValues branch_functions(const TipCoordinates& tc, int side) {
+  const double xa = tc.xa, xb = tc.xb;
   const double r = std::hypot(xa, xb);
   BranchValues out;
   if (r == 0.0) {
@@ -19,6 +28,11 @@ BranchValues branch_functions(const CrackTipFrame& frame, const Eigen::Vector3d&
   // On the cut's plane behind the front the face is a choice, not a computation: a rounding of xb
   // must not move a point to the other face.
   if (side != 0 && xa < 0 && std::abs(xb) <= 1e-12 * r) theta = side > 0 ? M_PI : -M_PI;
+  // A cut that curves away from the plane of b behind the front leaves points of one side with
+  // the other sign of xb (between that plane and the cut): they get their face's theta, so that
+  // theta = +-pi on the cut faces and F jumps across the cut, nowhere else.
+  const bool clamped = side != 0 && xa < 0 && std::abs(xb) > 1e-12 * r && (xb > 0) != (side > 0);
+  if (clamped) theta = side > 0 ? M_PI : -M_PI;
   const double sr = std::sqrt(r), s2 = std::sin(theta / 2), c2 = std::cos(theta / 2);
   const double st = std::sin(theta), ct = std::cos(theta);
   out.F << sr * s2, sr * c2, sr * s2 * st, sr * c2 * st;
@@ -29,11 +43,12 @@ BranchValues branch_functions(const CrackTipFrame& frame, const Eigen::Vector3d&
       h * c2, -0.5 * sr * s2,                                        //
       h * s2 * st, sr * (0.5 * c2 * st + s2 * ct),                   //
       h * c2 * st, sr * (-0.5 * s2 * st + c2 * ct);
-  Eigen::Matrix<double, 2, 3> dpolar_dabc;
-  dpolar_dabc << ct, st, 0.0,  //
-      -st / r, ct / r, 0.0;
-  // grad_x = R grad_abc because x_abc = R^T (x - origin): as rows, dF_x = dF_abc R^T.
-  out.dF = dpolar * dpolar_dabc * frame.R.transpose();
+  // d(r, theta) / d(xa, xb) at the point's own (xa, xb); theta is constant where it is clamped.
+  Eigen::Matrix2d dpolar_dab;
+  dpolar_dab << xa / r, xb / r,  //
+      -xb / (r * r), xa / (r * r);
+  if (clamped) dpolar_dab.row(1).setZero();
+  out.dF = dpolar * dpolar_dab * tc.grad;
   return out;
 }
 

@@ -27,6 +27,91 @@ CrackFront::CrackFront(std::vector<FrontSegment> segments) : segments_(std::move
         !s.b.allFinite())
       throw Error("crack front: segment " + std::to_string(i) + " is degenerate (zero length or zero normal)");
   }
+  if (!segments_.empty()) chains_ = std::make_shared<const std::vector<FrontPolyline>>(front_polylines(segments_));
+}
+
+namespace {
+
+// g(s) = (x - P(s)) . c(s): zero where x lies in the front's normal plane at s (the plane through
+// P(s) normal to the interpolated tangent c(s)).
+double normal_plane_offset(const FrontPolyline& ch, const Eigen::Vector3d& x, double s) {
+  Eigen::Vector3d c, b;
+  ch.frame(s, c, b);
+  return (x - ch.position(s)).dot(c);
+}
+
+}  // namespace
+
+TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
+  if (segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  // The foot of x on the front: the s whose normal plane (normal to the tangent interpolated
+  // along the front) contains x, the nearest such if several. Unlike the closest point of the
+  // polyline, which jumps between the two segments of a corner for the points on its concave
+  // side, the normal planes turn continuously with s, so s(x) is continuous (up to the front's
+  // radius of curvature). Beyond the ends of an open chain the end point is the foot.
+  double d0 = std::numeric_limits<double>::infinity();
+  const FrontPolyline* best = nullptr;
+  double s = 0;
+  int seg = 0;
+  bool inside = false;
+  for (const FrontPolyline& ch : *chains_) {
+    double cs, cd;
+    int ci;
+    ch.closest(x, cs, cd, &ci);
+    if (cd < d0) best = &ch, s = cs, d0 = cd, seg = ci;
+  }
+  double best_root = std::numeric_limits<double>::infinity();
+  for (const FrontPolyline& ch : *chains_) {
+    const int m = ch.segments(), np = static_cast<int>(ch.points.size());
+    for (int i = 0; i < m; ++i) {
+      const Eigen::Vector3d p0 = ch.points[i], d = ch.points[(i + 1) % np] - p0;
+      const double len = d.norm();
+      const double t = std::clamp((x - p0).dot(d) / (len * len), 0.0, 1.0);
+      if ((p0 + t * d - x).norm() > 1.5 * d0 + 1e-12 * len) continue;  // too far to hold the foot
+      double lo = ch.arc[i], hi = ch.arc[i] + len;
+      double glo = normal_plane_offset(ch, x, lo), ghi = normal_plane_offset(ch, x, hi);
+      if ((glo > 0 && ghi > 0) || (glo < 0 && ghi < 0)) continue;
+      for (int k = 0; k < 60 && hi - lo > 1e-15 * len; ++k) {  // g falls along the segment near the front
+        const double mid = 0.5 * (lo + hi), gm = normal_plane_offset(ch, x, mid);
+        if ((gm > 0) == (glo > 0)) lo = mid, glo = gm;
+        else hi = mid;
+      }
+      const double root = 0.5 * (lo + hi), dist = (x - ch.position(root)).norm();
+      if (dist < best_root) {
+        best_root = dist, best = &ch, s = root, seg = i;
+        inside = ch.closed || (root > 0 && root < ch.length);
+      }
+    }
+  }
+  const FrontPolyline& ch = *best;
+  const int np = static_cast<int>(ch.points.size());
+  const Eigen::Vector3d d = ch.points[(seg + 1) % np] - ch.points[seg];
+  const double len = d.norm();
+  const Eigen::Vector3d P = ch.position(s);
+  Eigen::Vector3d c, b;
+  ch.frame(s, c, b);
+  const Eigen::Vector3d a = b.cross(c), v = x - P;
+  TipCoordinates out;
+  out.xa = a.dot(v);
+  out.xb = b.dot(v);
+  out.grad.row(0) = a.transpose();
+  out.grad.row(1) = b.transpose();
+  if (inside) {
+    // P and the frame move with s(x): grad xa = a + (a'(s) . v - a . u) grad s, likewise xb, with
+    // u = P'(s) the segment's direction and, from g(s(x), x) = 0, grad s = c / (u . c - v . c'(s)).
+    // The frame's derivative by a central difference inside the segment.
+    const Eigen::Vector3d u = d / len;
+    const double h = 1e-6 * len, lo = std::max(ch.arc[seg], s - h), hi = std::min(ch.arc[seg] + len, s + h);
+    Eigen::Vector3d c_lo, b_lo, c_hi, b_hi;
+    ch.frame(lo, c_lo, b_lo);
+    ch.frame(hi, c_hi, b_hi);
+    const Eigen::Vector3d da = (b_hi.cross(c_hi) - b_lo.cross(c_lo)) / (hi - lo), db = (b_hi - b_lo) / (hi - lo),
+                          dc = (c_hi - c_lo) / (hi - lo);
+    const Eigen::Vector3d grad_s = c / (u.dot(c) - v.dot(dc));
+    out.grad.row(0) += (da.dot(v) - a.dot(u)) * grad_s.transpose();
+    out.grad.row(1) += (db.dot(v) - b.dot(u)) * grad_s.transpose();
+  }
+  return out;
 }
 
 int CrackFront::closest_segment(const Eigen::Vector3d& x) const {
@@ -56,6 +141,137 @@ CrackTipFrame CrackFront::frame(const Eigen::Vector3d& x) const {
   f.R.col(2) = c;
   f.origin = s.p0;
   return f;
+}
+
+std::vector<FrontPolyline> front_polylines(const CrackFront& front) {
+  if (front.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  return front.chains();
+}
+
+std::vector<FrontPolyline> front_polylines(const std::vector<FrontSegment>& S) {
+  if (S.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  const int n = static_cast<int>(S.size());
+  Eigen::Vector3d lo = S[0].p0, hi = S[0].p0;
+  for (const auto& g : S) {
+    lo = lo.cwiseMin(g.p0).cwiseMin(g.p1);
+    hi = hi.cwiseMax(g.p0).cwiseMax(g.p1);
+  }
+  const double tol = 1e-9 * std::max((hi - lo).norm(), 1e-300);
+  std::vector<int> next(n, -1), prev(n, -1);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (j != i && prev[j] < 0 && (S[i].p1 - S[j].p0).norm() <= tol) {
+        next[i] = j;
+        prev[j] = i;
+        break;
+      }
+  std::vector<char> used(n, 0);
+  std::vector<FrontPolyline> out;
+  const auto chain_from = [&](int start) {
+    FrontPolyline p;
+    int i = start;
+    while (i >= 0 && !used[i]) {
+      used[i] = 1;
+      p.points.push_back(S[i].p0);
+      p.normals.push_back(S[i].b.normalized());
+      if (next[i] < 0) p.points.push_back(S[i].p1);
+      i = next[i];
+    }
+    p.closed = i == start;
+    if (i >= 0 && !p.closed) p.points.push_back(S[i].p0);  // ran into a chain taken already
+    const int m = static_cast<int>(p.points.size());
+    p.arc.assign(m, 0.0);
+    for (int k = 1; k < m; ++k) p.arc[k] = p.arc[k - 1] + (p.points[k] - p.points[k - 1]).norm();
+    p.length = p.arc[m - 1] + (p.closed ? (p.points[0] - p.points[m - 1]).norm() : 0.0);
+    out.push_back(std::move(p));
+  };
+  for (int i = 0; i < n; ++i)
+    if (prev[i] < 0 && !used[i]) chain_from(i);
+  for (int i = 0; i < n; ++i)
+    if (!used[i]) chain_from(i);  // loops
+  return out;
+}
+
+namespace {
+
+// Segment i of a chain containing arc length s (already wrapped or clamped) and the fraction along it.
+void locate(const FrontPolyline& p, double s, int& i, double& f) {
+  const int m = p.segments();
+  i = static_cast<int>(std::upper_bound(p.arc.begin(), p.arc.end(), s) - p.arc.begin()) - 1;
+  i = std::clamp(i, 0, m - 1);
+  const double end = i + 1 < static_cast<int>(p.arc.size()) ? p.arc[i + 1] : p.length;
+  f = end > p.arc[i] ? std::clamp((s - p.arc[i]) / (end - p.arc[i]), 0.0, 1.0) : 0.0;
+}
+
+double wrap(const FrontPolyline& p, double s) {
+  if (!p.closed) return std::clamp(s, 0.0, p.length);
+  s = std::fmod(s, p.length);
+  return s < 0 ? s + p.length : s;
+}
+
+}  // namespace
+
+Eigen::Vector3d FrontPolyline::position(double s) const {
+  int i;
+  double f;
+  locate(*this, wrap(*this, s), i, f);
+  const int j = (i + 1) % static_cast<int>(points.size());
+  return (1 - f) * points[i] + f * points[j];
+}
+
+void FrontPolyline::frame(double s, Eigen::Vector3d& c, Eigen::Vector3d& b) const {
+  // Tangent and normal at the vertices (mean of the two segments meeting there), interpolated
+  // linearly along each segment: a frame continuous along the chain.
+  const int m = segments(), np = static_cast<int>(points.size());
+  const auto seg_dir = [&](int k) { return (points[(k + 1) % np] - points[k]).normalized().eval(); };
+  const auto vertex = [&](int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv) {
+    const int before = closed ? (v + m - 1) % m : v - 1, after = closed ? v % m : v;
+    cv = Eigen::Vector3d::Zero();
+    bv = Eigen::Vector3d::Zero();
+    if (before >= 0) cv += seg_dir(before), bv += normals[before];
+    if (after < m) cv += seg_dir(after), bv += normals[after];
+    if (!(cv.norm() > 1e-12)) cv = seg_dir(after < m ? after : before);  // a cusp: keep one side
+    cv.normalize();
+  };
+  int i;
+  double f;
+  locate(*this, wrap(*this, s), i, f);
+  Eigen::Vector3d c0, b0, c1, b1;
+  vertex(i, c0, b0);
+  vertex(i + 1, c1, b1);
+  c = ((1 - f) * c0 + f * c1).normalized();
+  b = (1 - f) * b0 + f * b1;
+  b = (b - b.dot(c) * c).normalized();
+}
+
+void FrontPolyline::closest(const Eigen::Vector3d& x, double& s, double& distance, int* segment, bool* inside) const {
+  const int m = segments(), np = static_cast<int>(points.size());
+  double best = std::numeric_limits<double>::infinity();
+  s = 0.0;
+  for (int i = 0; i < m; ++i) {
+    const Eigen::Vector3d p0 = points[i], d = points[(i + 1) % np] - p0;
+    const double len2 = d.squaredNorm();
+    const double t_free = len2 > 0 ? (x - p0).dot(d) / len2 : 0.0;
+    const double t = std::clamp(t_free, 0.0, 1.0);
+    const double d2 = (p0 + t * d - x).squaredNorm();
+    if (d2 < best) {
+      best = d2;
+      s = arc[i] + t * std::sqrt(len2);
+      if (segment) *segment = i;
+      if (inside) *inside = t_free > 0.0 && t_free < 1.0;
+    }
+  }
+  distance = std::sqrt(best);
+}
+
+double FrontPolyline::arc_offset(double s0, double s) const {
+  double d = s - s0;
+  if (closed) {
+    d = std::fmod(d, length);
+    if (d > 0.5 * length) d -= length;
+    if (d <= -0.5 * length) d += length;
+  }
+  return d;
 }
 
 CrackFront read_front(const TetMesh& mesh, const std::string& file) {

@@ -38,7 +38,12 @@ void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const 
       if (!have_branch) {
         if (em.front.empty())
           throw Error("tet " + std::to_string(t) + ": branch DOF " + std::to_string(dof) + " but the cut has no front");
-        F = branch_functions(em.front.frame(x), x, side);
+        // Continuous crack-tip coordinates (crack_front.h); behind the front the point's side
+        // decides the face (theta = +-pi on the cut), from the cut surface when not given.
+        const TipCoordinates tc = em.front.coordinates(x);
+        int branch_side = side;
+        if (branch_side == 0 && tc.xa < 0 && em.cut) branch_side = h != 0 ? h : (h = em.cut->side(x));
+        F = branch_functions(tc, branch_side);
         have_branch = true;
       }
       const int j = static_cast<int>((dof - em.np - em.ns) % 4);

@@ -15,10 +15,12 @@ struct BasisAt {
 
 /// Evaluates the enriched basis of tet `t` at x (paper 3.4): for an original node N_m; for a
 /// sign DOF N_l psi_l(x) with psi_l = (H(x) - H(P_l)) / 2; for the 4 branch DOFs of a node
-/// N_l F_j(x), j = 0..3, with the ACTFs F of DESIGN.md in the frame of the closest front segment.
+/// N_l F_j(x), j = 0..3, with the ACTFs F of DESIGN.md in the continuous crack-tip coordinates of
+/// CrackFront::coordinates (the frame interpolated along the front at the closest front point: no
+/// jump where the closest segment changes).
 /// `side` is H(x) to use (+1 / -1), so that a point on the cut can be evaluated on either face;
-/// 0 means "decide with the cut surface". With side given, a point on the cut plane behind the
-/// front gets theta = side * pi. The gradients of psi vanish (H is piecewise constant).
+/// 0 means "decide with the cut surface" (for the ACTFs only behind the front, xa < 0). Behind the
+/// front the side decides the face: theta = side * pi on the cut (branch_functions.h). The gradients of psi vanish (H is piecewise constant).
 /// Throws xfem::Error if a sign DOF needs H(x) with side 0 and no cut, or a branch DOF meets an
 /// empty front.
 void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side, BasisAt& out);

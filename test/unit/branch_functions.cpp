@@ -1,8 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/branch_functions.h"
 
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
+#include <memory>
+
+#include "xfem/box_mesh.h"
+#include "xfem/classification.h"
+#include "xfem/cut_surface.h"
 
 namespace {
 // A front along the line x = 0.5, z = 0.5 (direction -y), cut in the plane z = 0.5 for x < 0.5
@@ -61,5 +69,123 @@ TEST_CASE("branch_functions: gradients match central finite differences", "[bran
     const Eigen::Vector4d fd = (xfem::branch_functions(f, x + e).F - xfem::branch_functions(f, x - e).F) / (2 * h);
     // Central differences: error O(h^2 F''') ~ 1e-11 here; 1e-7 leaves room for rounding (1e-16 / h).
     for (int j = 0; j < 4; ++j) CHECK_THAT(at.dF(j, d), Catch::WithinAbs(fd[j], 1e-7));
+  }
+}
+
+namespace {
+
+// A cut of the unit box whose front is the curve x = 0.5 + 0.15 sin(pi y) (12 segments), lying
+// in the plane z = 0.47 (flat) or on the curved blade z = 0.47 + 0.6 (x - 0.5)^2, normal up.
+std::shared_ptr<xfem::CutSurface> curved_front_cut(bool curved_blade) {
+  const int n = 12;
+  xfem::TriangleMesh cut;
+  cut.points.resize(2 * (n + 1), 3);
+  cut.triangles.resize(2 * n, 3);
+  const auto z = [&](double x) { return 0.47 + (curved_blade ? 0.6 * (x - 0.5) * (x - 0.5) : 0.0); };
+  // Behind the front the blade is sampled at x = -0.1 and at the front only: between them it is
+  // planar per triangle, as a triangulated cut is.
+  for (int i = 0; i <= n; ++i) {
+    const double y = -0.1 + 1.2 * i / n, xf = 0.5 + 0.15 * std::sin(M_PI * y);
+    cut.points.row(2 * i) << -0.1, y, z(-0.1);
+    cut.points.row(2 * i + 1) << xf, y, z(xf);
+  }
+  for (int i = 0; i < n; ++i) {
+    cut.triangles.row(2 * i) << 2 * i, 2 * i + 1, 2 * i + 3;
+    cut.triangles.row(2 * i + 1) << 2 * i, 2 * i + 3, 2 * i + 2;
+  }
+  return std::make_shared<xfem::CutSurface>(cut);
+}
+
+}  // namespace
+
+TEST_CASE("branch_functions: continuous across every interior face of a curved-front mesh except across the cut",
+          "[branch_functions]") {
+  const xfem::TetMesh mesh = xfem::box_mesh({8, 8, 8}, {0, 0, 0}, {1, 1, 1});
+  for (const bool blade : {false, true}) {
+    const auto cut = curved_front_cut(blade);
+    const xfem::Classification c = xfem::classify(mesh, *cut);
+    REQUIRE(c.front.segments().size() >= 8);
+    // Every interior face once: sorted node triples shared by two tets.
+    std::map<std::array<int, 3>, int> uses;
+    for (int t = 0; t < mesh.tets.rows(); ++t)
+      for (int k = 0; k < 4; ++k) {
+        std::array<int, 3> f;
+        for (int i = 0, j = 0; i < 4; ++i)
+          if (i != k) f[j++] = mesh.tets(t, i);
+        std::sort(f.begin(), f.end());
+        ++uses[f];
+      }
+    double jump_new = 0, jump_old = 0;
+    long compared = 0;
+    const double eps = 1e-9;
+    for (const auto& [f, count] : uses) {
+      if (count != 2) continue;
+      Eigen::Vector3d P[3];
+      for (int i = 0; i < 3; ++i) P[i] = mesh.points.row(f[i]).transpose();
+      const Eigen::Vector3d n = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
+      for (const Eigen::Vector3d& l : {Eigen::Vector3d(0.6, 0.2, 0.2), Eigen::Vector3d(0.2, 0.6, 0.2),
+                                      Eigen::Vector3d(0.2, 0.2, 0.6)}) {
+        const Eigen::Vector3d x = l[0] * P[0] + l[1] * P[1] + l[2] * P[2];
+        const Eigen::Vector3d xp = x + eps * n, xm = x - eps * n;
+        const int sp = cut->side(xp), sm = cut->side(xm);
+        if (sp != sm) continue;  // across the cut: F is meant to jump there
+        double s, d;
+        c.front.chains()[0].closest(x, s, d);
+        if (d > 0.3) continue;  // the enrichment zone; far away the closest front point may jump
+        const Eigen::Vector4d Fp = xfem::branch_functions(c.front.coordinates(xp), sp).F;
+        const Eigen::Vector4d Fm = xfem::branch_functions(c.front.coordinates(xm), sm).F;
+        jump_new = std::max(jump_new, (Fp - Fm).cwiseAbs().maxCoeff());
+        const Eigen::Vector4d Gp = xfem::branch_functions(c.front.frame(xp), xp, sp).F;
+        const Eigen::Vector4d Gm = xfem::branch_functions(c.front.frame(xm), xm, sm).F;
+        jump_old = std::max(jump_old, (Gp - Gm).cwiseAbs().maxCoeff());
+        ++compared;
+      }
+    }
+    INFO((blade ? "curved blade" : "flat cut") << ": " << compared << " face points, largest jump of F "
+                                               << jump_new << " (closest-segment frames: " << jump_old << ")");
+    CHECK(compared > 1000);
+    CHECK(jump_new < 1e-5);
+    // What the test catches: on the curved blade the frame of the closest segment jumps (its b
+    // turns from segment to segment); on the flat cut only its gradient directions do.
+    if (blade) CHECK(jump_old > 1e-3);
+
+    // theta = +-pi exactly on the faces of a flat cut behind the front: F1 = F2 = F3 = 0,
+    // F0 = side sqrt(r). (On the curved blade only where the blade lies on the far side of the
+    // front's tangent plane from the point's side; elsewhere theta is within the blade's bend of pi.)
+    if (blade) continue;
+    const xfem::TriangleMesh& cm = cut->mesh();
+    for (int t = 0; t < cm.triangles.rows(); ++t) {
+      const Eigen::Vector3d x = (cm.points.row(cm.triangles(t, 0)) + cm.points.row(cm.triangles(t, 1)) +
+                                 cm.points.row(cm.triangles(t, 2))).transpose() / 3.0;
+      if (x.y() < 0.05 || x.y() > 0.95 || x.x() < 0.0) continue;
+      const xfem::TipCoordinates tc = c.front.coordinates(x);
+      REQUIRE(tc.xa < 0);
+      for (const int side : {1, -1}) {
+        const Eigen::Vector4d F = xfem::branch_functions(tc, side).F;
+        const double sr = std::sqrt(std::hypot(tc.xa, tc.xb));
+        CHECK_THAT(F[0], Catch::WithinAbs(side * sr, 1e-14));
+        CHECK_THAT(F[1], Catch::WithinAbs(0.0, 1e-14));
+        CHECK_THAT(F[2], Catch::WithinAbs(0.0, 1e-14));
+        CHECK_THAT(F[3], Catch::WithinAbs(0.0, 1e-14));
+      }
+    }
+  }
+}
+
+TEST_CASE("branch_functions: gradients from continuous coordinates match finite differences on a curved front",
+          "[branch_functions]") {
+  const auto cut = curved_front_cut(true);
+  const xfem::Classification c = xfem::classify(xfem::box_mesh({6, 6, 6}, {0, 0, 0}, {1, 1, 1}), *cut);
+  const double h = 1e-6;
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.3, 0.3, 0.6), Eigen::Vector3d(0.8, 0.55, 0.4),
+                                  Eigen::Vector3d(0.55, 0.71, 0.52), Eigen::Vector3d(0.2, 0.4, 0.3)}) {
+    const int side = cut->side(x);
+    const xfem::BranchValues B = xfem::branch_functions(c.front.coordinates(x), side);
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(k);
+      const Eigen::Vector4d d = (xfem::branch_functions(c.front.coordinates(x + e), side).F -
+                                 xfem::branch_functions(c.front.coordinates(x - e), side).F) / (2 * h);
+      for (int j = 0; j < 4; ++j) CHECK_THAT(B.dF(j, k), Catch::WithinAbs(d[j], 1e-6));
+    }
   }
 }

@@ -65,3 +65,36 @@ TEST_CASE("crack_front: bad input is named", "[crack_front]") {
                     "m.vtu: field array 'front_segments' missing (is this xfem-classify output?)");
   CHECK_THROWS_WITH(xfem::CrackFront({{{0, 0, 0}, {0, 0, 0}, {0, 0, 1}}}), Catch::Contains("segment 0 is degenerate"));
 }
+
+TEST_CASE("crack_front: segments join into chains, open and closed, whatever their order", "[crack_front]") {
+  // An open chain of three segments given out of order, and a closed square loop.
+  const Eigen::Vector3d z(0, 0, 1);
+  std::vector<xfem::FrontSegment> s = {{{2, 0, 0}, {3, 0, 0}, z}, {{0, 0, 0}, {1, 0, 0}, z}, {{1, 0, 0}, {2, 0, 0}, z},
+                                       {{10, 0, 0}, {11, 0, 0}, z}, {{11, 1, 0}, {10, 1, 0}, z},
+                                       {{11, 0, 0}, {11, 1, 0}, z}, {{10, 1, 0}, {10, 0, 0}, z}};
+  const auto chains = xfem::front_polylines(xfem::CrackFront(s));
+  REQUIRE(chains.size() == 2);
+  CHECK(!chains[0].closed);
+  REQUIRE(chains[0].points.size() == 4);
+  CHECK(chains[0].points[0].isApprox(Eigen::Vector3d(0, 0, 0)));
+  CHECK(chains[0].points[3].isApprox(Eigen::Vector3d(3, 0, 0)));
+  CHECK_THAT(chains[0].length, Catch::WithinAbs(3.0, 1e-14));
+  CHECK(chains[1].closed);
+  CHECK(chains[1].points.size() == 4);
+  CHECK_THAT(chains[1].length, Catch::WithinAbs(4.0, 1e-14));
+  // Positions, frames and closest points along the loop; arc offsets the short way round.
+  CHECK(chains[1].position(4.5).isApprox(Eigen::Vector3d(10.5, 0, 0)));
+  Eigen::Vector3d c, b;
+  chains[1].frame(0.5, c, b);
+  CHECK(c.isApprox(Eigen::Vector3d(1, 0, 0)));
+  CHECK(b.isApprox(z));
+  chains[1].frame(1.0, c, b);  // a corner: the mean of the two segments' directions
+  CHECK(c.isApprox(Eigen::Vector3d(1, 1, 0).normalized()));
+  double s_at, d;
+  chains[1].closest({10.5, -2, 0}, s_at, d);
+  CHECK_THAT(s_at, Catch::WithinAbs(0.5, 1e-14));
+  CHECK_THAT(d, Catch::WithinAbs(2.0, 1e-14));
+  CHECK_THAT(chains[1].arc_offset(3.5, 0.5), Catch::WithinAbs(1.0, 1e-14));
+  CHECK_THAT(chains[0].arc_offset(2.5, 0.5), Catch::WithinAbs(-2.0, 1e-14));
+  CHECK_THROWS_WITH(xfem::front_polylines(xfem::CrackFront()), Catch::Contains("no segments"));
+}

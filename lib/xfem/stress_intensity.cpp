@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/stress_intensity.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <unordered_map>
+
+#include "xfem/atomic_file.h"
+#include "xfem/branch_functions.h"
+#include "xfem/conforming_quadrature.h"
+#include "xfem/element_stiffness.h"
+#include "xfem/enriched_basis.h"
+#include "xfem/error.h"
+#include "xfem/exact_fields.h"
+#include "xfem/point_location.h"
+#include "xfem/tet_shape.h"
+
+namespace xfem {
+
+double default_domain_radius(const EnrichedMesh& em) {
+  double sum = 0.0;
+  long edges = 0;
+  for (int t = 0; t < em.tets(); ++t) {
+    if (em.cut_class.empty() || em.cut_class[t] != 1) continue;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        sum += (em.mesh.points.row(em.mesh.tets(t, i)) - em.mesh.points.row(em.mesh.tets(t, j))).norm();
+        ++edges;
+      }
+  }
+  if (edges == 0) throw Error("no partially cut tets: the cut has no front inside the body");
+  return 2.5 * sum / static_cast<double>(edges);
+}
+
+namespace {
+
+Eigen::Matrix3d stress(const Eigen::Matrix3d& grad, const Lame& m) {
+  const Eigen::Matrix3d eps = 0.5 * (grad + grad.transpose());
+  return m.lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * m.mu * eps;
+}
+
+// The integration points of one tet and the solution's gradient at each, computed once: the
+// domains of neighbouring front points overlap.
+struct TetPoints {
+  PointRule rule;
+  std::vector<Eigen::Matrix3d> grad_u, sigma;
+};
+
+}  // namespace
+
+std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen::VectorXd& u, double E, double nu,
+                                             const Eigen::Vector3d& body, const FrontSifOptions& options,
+                                             const std::function<void(double)>& progress) {
+  if (u.size() != 3 * em.n)
+    throw Error("solution: " + std::to_string(u.size()) + " values, expected 3N = " + std::to_string(3 * em.n));
+  if (em.front.empty()) throw Error("the cut has no front inside the body: no stress intensity factors to compute");
+  if (!(options.plateau >= 0.0 && options.plateau < 1.0)) throw Error("plateau must lie in [0, 1)");
+  if (options.order < 1 || options.order > 20) throw Error("order must lie in 1..20");
+  const double R = options.radius > 0 ? options.radius : default_domain_radius(em);
+  if (!std::isfinite(R) || !(R > 0)) throw Error("domain radius must be positive");
+  const std::vector<FrontPolyline> chains = front_polylines(em.front);
+  const Lame lm = lame(E, nu);
+  const TetMesh& mesh = em.mesh;
+  const long np = mesh.points.rows();
+  const CutElementSplits splits = split_cut_elements(em);
+  const PointLocator locator(mesh);
+  std::unordered_map<int, TetPoints> cache;
+  const auto points_of = [&](int t) -> const TetPoints& {
+    auto it = cache.find(t);
+    if (it != cache.end()) return it->second;
+    TetPoints tp;
+    conforming_rule(em, splits, t, options.order, tp.rule);
+    for (int k = 0; k < tp.rule.size(); ++k) {
+      int side = tp.rule.side[k];
+      if (side == 0 && em.cut) side = em.cut->side(tp.rule.x[k]);
+      tp.rule.side[k] = side;
+      tp.grad_u.push_back(displacement_gradient_at(em, t, tp.rule.x[k], side, u));
+      tp.sigma.push_back(stress(tp.grad_u.back(), lm));
+    }
+    return cache.emplace(t, std::move(tp)).first->second;
+  };
+
+  // Front points: evenly spaced along each chain, both ends of an open chain included.
+  std::vector<FrontSif> out;
+  std::vector<double> halfwidth;
+  for (std::size_t p = 0; p < chains.size(); ++p) {
+    const FrontPolyline& ch = chains[p];
+    const double want = options.spacing > 0 ? options.spacing : R;
+    const int n = std::max(1, static_cast<int>(std::lround(ch.length / want)));
+    const double d = ch.length / n;
+    for (int i = 0; i <= n; ++i) {
+      if (ch.closed && i == n) break;
+      FrontSif f;
+      f.chain = static_cast<int>(p);
+      f.s = i * d;
+      f.x = ch.position(f.s);
+      ch.frame(f.s, f.c, f.b);
+      f.a = f.b.cross(f.c);
+      f.end = !ch.closed && (i == 0 || i == n);
+      out.push_back(f);
+      halfwidth.push_back(d);
+    }
+  }
+
+  // Each node's closest point on each chain.
+  std::vector<std::vector<double>> node_s(chains.size()), node_rho(chains.size());
+  for (std::size_t p = 0; p < chains.size(); ++p) {
+    node_s[p].resize(np);
+    node_rho[p].resize(np);
+    for (long k = 0; k < np; ++k) chains[p].closest(mesh.points.row(k).transpose(), node_s[p][k], node_rho[p][k]);
+  }
+
+  // Nodes on the body's surface (on a face of one tet only): a domain reaching them away from the
+  // front's ends misses the surface term of the domain form.
+  std::vector<char> on_surface(np, 0);
+  {
+    std::map<std::array<int, 3>, int> faces;
+    for (int t = 0; t < em.tets(); ++t)
+      for (int k = 0; k < 4; ++k) {
+        std::array<int, 3> f;
+        for (int i = 0, j = 0; i < 4; ++i)
+          if (i != k) f[j++] = mesh.tets(t, i);
+        std::sort(f.begin(), f.end());
+        ++faces[f];
+      }
+    for (const auto& [f, uses] : faces)
+      if (uses == 1)
+        for (int n : f) on_surface[n] = 1;
+  }
+
+  const double denom12 = E / (2.0 * (1.0 - nu * nu));
+  const bool has_body = body.norm() > 0;
+  std::vector<double> q(np);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    FrontSif& f = out[k];
+    const FrontPolyline& ch = chains[f.chain];
+    const double d = halfwidth[k];
+    for (long n = 0; n < np; ++n) {
+      const double rho = node_rho[f.chain][n];
+      const double qr = rho <= options.plateau * R ? 1.0 : std::max(0.0, (R - rho) / ((1.0 - options.plateau) * R));
+      const double qt = std::max(0.0, 1.0 - std::abs(ch.arc_offset(f.s, node_s[f.chain][n])) / d);
+      q[n] = qr * qt;
+      const double sn = node_s[f.chain][n];
+      if (q[n] > 0 && on_surface[n] && (ch.closed || (sn > 1e-9 * ch.length && sn < (1 - 1e-9) * ch.length))) f.reaches_surface = true;
+    }
+    // Q: the trace of the interpolated q along the chain, by 2-point Gauss on 64 pieces per half-width.
+    double Q = 0.0;
+    const int pieces = 128;
+    const double lo = ch.closed ? f.s - d : std::max(0.0, f.s - d), hi = ch.closed ? f.s + d : std::min(ch.length, f.s + d);
+    const double h = (hi - lo) / pieces;
+    for (int i = 0; i < pieces; ++i)
+      for (const double g : {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}) {
+        const Eigen::Vector3d x = ch.position(lo + h * (i + 0.5 + 0.5 * g));
+        const int t = locator.nearest(x, R);
+        if (t < 0) continue;
+        const Eigen::Vector4d l = locator.barycentric(t, x);
+        double qx = 0.0;
+        for (int c = 0; c < 4; ++c) qx += l[c] * q[mesh.tets(t, c)];
+        Q += 0.5 * h * qx;
+      }
+    if (!(Q > 0))
+      throw Error("front point at s = " + std::to_string(f.s) + ": the domain weight q vanishes on the front (the "
+                  "spacing or the radius is smaller than the elements there: increase them)");
+    f.q_trace = Q;
+
+    // The auxiliary fields as combinations of the crack-tip functions in the point's frame.
+    WilliamsField aux;
+    aux.origin = f.x;
+    aux.a = f.a;
+    aux.b = f.b;
+    aux.E = E;
+    aux.nu = nu;
+    std::array<Eigen::Matrix<double, 3, 4>, 3> C;
+    for (int m = 0; m < 3; ++m) {
+      aux.K1 = m == 0;
+      aux.K2 = m == 1;
+      aux.K3 = m == 2;
+      C[m] = aux.branch_coefficients();
+    }
+    const CrackTipFrame frame = aux.frame();
+    Eigen::Vector3d I = Eigen::Vector3d::Zero();
+    for (int t = 0; t < em.tets(); ++t) {
+      double qmin = 1.0, qmax = 0.0;
+      for (int c = 0; c < 4; ++c) {
+        qmin = std::min(qmin, q[mesh.tets(t, c)]);
+        qmax = std::max(qmax, q[mesh.tets(t, c)]);
+      }
+      if (qmax == 0.0 || (qmax == qmin && !has_body)) continue;
+      ++f.tets;
+      const TetShape shape = tet_shape(mesh, t);
+      Eigen::Vector4d qc;
+      for (int c = 0; c < 4; ++c) qc[c] = q[mesh.tets(t, c)];
+      const Eigen::Vector3d gq = shape.grad.transpose() * qc;
+      const TetPoints& tp = points_of(t);
+      for (int i = 0; i < tp.rule.size(); ++i) {
+        const Eigen::Vector3d& x = tp.rule.x[i];
+        const BranchValues F = branch_functions(frame, x, tp.rule.side[i]);
+        const Eigen::Matrix3d& Gu = tp.grad_u[i];
+        const Eigen::Matrix3d& S = tp.sigma[i];
+        const Eigen::Vector3d Gu_a = Gu * f.a, S_gq = S * gq;
+        const double qx = has_body ? shape.values(x).dot(qc) : 0.0;
+        for (int m = 0; m < 3; ++m) {
+          const Eigen::Matrix3d Ga = C[m] * F.dF;
+          const Eigen::Matrix3d Sa = stress(Ga, lm);
+          const Eigen::Matrix3d ea = 0.5 * (Ga + Ga.transpose());
+          const double integrand = (Ga * f.a).dot(S_gq) + Gu_a.dot(Sa * gq) - (S.cwiseProduct(ea)).sum() * f.a.dot(gq) -
+                                   qx * body.dot(Ga * f.a);
+          I[m] += tp.rule.weights[i] * integrand;
+        }
+      }
+    }
+    I /= Q;
+    f.K1 = denom12 * I[0];
+    f.K2 = denom12 * I[1];
+    f.K3 = lm.mu * I[2];
+    f.G = (f.K1 * f.K1 + f.K2 * f.K2) / (2.0 * denom12) + f.K3 * f.K3 / (2.0 * lm.mu);
+    if (progress) progress(static_cast<double>(k + 1) / static_cast<double>(out.size()));
+  }
+  return out;
+}
+
+namespace {
+
+void write_text(const std::string& path, const std::function<void(std::ostream&)>& body) {
+  write_atomically(path, [&](const std::string& tmp) {
+    std::ofstream os(tmp, std::ios::binary);
+    if (!os) throw Error(path + ": cannot open for writing");
+    os << std::setprecision(10);
+    body(os);
+    os.flush();
+    if (!os) throw Error(path + ": write failed");
+  });
+}
+
+}  // namespace
+
+void write_front_vtp(const std::vector<FrontSif>& points, const std::string& path) {
+  write_text(path, [&](std::ostream& os) {
+    // One polyline per chain; a closed chain repeats its first point's index.
+    std::vector<long> conn, offsets;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      conn.push_back(static_cast<long>(i));
+      const bool last = i + 1 == points.size() || points[i + 1].chain != points[i].chain;
+      if (last) {
+        std::size_t first = i;
+        while (first > 0 && points[first - 1].chain == points[i].chain) --first;
+        if (!points[first].end && i > first) conn.push_back(static_cast<long>(first));
+        offsets.push_back(static_cast<long>(conn.size()));
+      }
+    }
+    os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+       << "<PolyData>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfVerts=\"0\" NumberOfLines=\""
+       << offsets.size() << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<PointData Scalars=\"K_I\">\n";
+    const auto scalar = [&](const char* name, const std::function<double(const FrontSif&)>& get) {
+      os << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+      for (const auto& p : points) os << get(p) << "\n";
+      os << "</DataArray>\n";
+    };
+    scalar("K_I", [](const FrontSif& p) { return p.K1; });
+    scalar("K_II", [](const FrontSif& p) { return p.K2; });
+    scalar("K_III", [](const FrontSif& p) { return p.K3; });
+    scalar("G", [](const FrontSif& p) { return p.G; });
+    scalar("arc_length", [](const FrontSif& p) { return p.s; });
+    const auto vector = [&](const char* name, const std::function<Eigen::Vector3d(const FrontSif&)>& get) {
+      os << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto& p : points) {
+        const Eigen::Vector3d v = get(p);
+        os << v[0] << " " << v[1] << " " << v[2] << "\n";
+      }
+      os << "</DataArray>\n";
+    };
+    vector("ahead", [](const FrontSif& p) { return p.a; });
+    vector("normal", [](const FrontSif& p) { return p.b; });
+    vector("tangent", [](const FrontSif& p) { return p.c; });
+    os << "</PointData>\n<Points>\n";
+    os << "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const auto& p : points) os << p.x[0] << " " << p.x[1] << " " << p.x[2] << "\n";
+    os << "</DataArray>\n</Points>\n<Lines>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (long c : conn) os << c << "\n";
+    os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (long o : offsets) os << o << "\n";
+    os << "</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  });
+}
+
+void write_front_csv(const std::vector<FrontSif>& points, const std::string& path) {
+  write_text(path, [&](std::ostream& os) {
+    os << "chain,arc_length,x,y,z,K_I,K_II,K_III,G,end\n";
+    for (const auto& p : points)
+      os << p.chain << "," << p.s << "," << p.x[0] << "," << p.x[1] << "," << p.x[2] << "," << p.K1 << "," << p.K2
+         << "," << p.K3 << "," << p.G << "," << (p.end ? 1 : 0) << "\n";
+  });
+}
+
+}  // namespace xfem

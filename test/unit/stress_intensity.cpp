@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/stress_intensity.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <memory>
+
+#include "xfem/box_mesh.h"
+#include "xfem/classification.h"
+#include "xfem/dof_numbering.h"
+#include "xfem/error.h"
+#include "xfem/exact_fields.h"
+
+namespace {
+
+// The verification pipeline's cut: the half-plane z = 0.47, x <= 0.53 (normal +z) through the
+// unit box, as two triangles reaching out of it on three sides: a straight front along y.
+std::shared_ptr<xfem::CutSurface> straight_cut() {
+  xfem::TriangleMesh cut;
+  cut.points.resize(4, 3);
+  cut.points << -0.1, -0.1, 0.47, 0.53, -0.1, 0.47, 0.53, 1.1, 0.47, -0.1, 1.1, 0.47;
+  cut.triangles.resize(2, 3);
+  cut.triangles << 0, 1, 2, 0, 2, 3;
+  return std::make_shared<xfem::CutSurface>(cut);
+}
+
+// An n^3 box classified and enriched in memory (as xfem-classify and xfem-enrich would).
+xfem::EnrichedMesh enriched_box(int n, const std::shared_ptr<xfem::CutSurface>& cut, double tip_radius) {
+  xfem::EnrichedMesh em;
+  em.mesh = xfem::box_mesh({n, n, n}, {0, 0, 0}, {1, 1, 1});
+  xfem::ClassifyOptions o;
+  o.tip_radius = tip_radius;
+  const xfem::Classification c = xfem::classify(em.mesh, *cut, o);
+  em.side = c.side;
+  std::vector<int> enrichment, cut_class;
+  for (auto e : c.enrichment) enrichment.push_back(static_cast<int>(e));
+  for (auto k : c.cut_class) cut_class.push_back(static_cast<int>(k));
+  em.cut_class = cut_class;
+  const xfem::DofNumbering d = xfem::dof_numbering(em.mesh.tets, em.mesh.points.rows(), enrichment, cut_class);
+  em.np = d.np, em.ns = d.ns, em.nb = d.nb, em.n = d.n;
+  em.offsets = d.offsets;
+  em.dofs = d.dofs;
+  em.local = d.local;
+  em.front = c.front;
+  em.cut = cut;
+  return em;
+}
+
+// The Williams field as an X-FEM vector on a mesh where every node is branch enriched: originals
+// 0, each node's branch DOFs the field's crack-tip coefficients. Exact up to rounding.
+Eigen::VectorXd williams_vector(const xfem::EnrichedMesh& em, const xfem::WilliamsField& w) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * em.n);
+  const Eigen::Matrix<double, 3, 4> C = w.branch_coefficients();
+  REQUIRE(em.nb == em.np);
+  for (long k = 0; k < em.nb; ++k)
+    for (int j = 0; j < 4; ++j) u.segment<3>(3 * (em.np + em.ns + 4 * k + j)) = C.col(j);
+  return u;
+}
+
+xfem::WilliamsField field(double K1, double K2, double K3) {
+  xfem::WilliamsField w;
+  w.origin = {0.53, 0.0, 0.47};
+  w.a = {1, 0, 0};
+  w.b = {0, 0, 1};
+  w.K1 = K1, w.K2 = K2, w.K3 = K3;
+  w.E = 2.0, w.nu = 0.3;
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("stress_intensity: the interaction integral recovers K_I, K_II, K_III of an exact Williams field",
+          "[stress_intensity]") {
+  const auto cut = straight_cut();
+  const xfem::EnrichedMesh em = enriched_box(4, cut, 10.0);  // every node branch enriched
+  xfem::FrontSifOptions o;
+  o.radius = 0.3;
+  o.spacing = 0.25;
+  o.order = 4;
+  const double mixed[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.7, -0.4, 0.25}};
+  for (const auto& K : mixed) {
+    const xfem::WilliamsField w = field(K[0], K[1], K[2]);
+    const auto pts = xfem::front_stress_intensity(em, williams_vector(em, w), w.E, w.nu, Eigen::Vector3d::Zero(), o);
+    REQUIRE(pts.size() == 5);  // y = 0, 0.25, .., 1 (the front runs from y = 1 to y = 0)
+    for (const auto& p : pts) {
+      CHECK_THAT(p.x.z(), Catch::WithinAbs(0.47, 1e-12));
+      CHECK(p.a.isApprox(Eigen::Vector3d(1, 0, 0), 1e-12));
+      if (p.end) continue;
+      INFO("K = " << K[0] << ", " << K[1] << ", " << K[2] << " at s = " << p.s << ": " << p.K1 << ", " << p.K2
+                  << ", " << p.K3);
+      // c = -y here: K_III of the field (defined with c = a x b = -y) keeps its sign.
+      CHECK_THAT(p.K1, Catch::WithinAbs(K[0], 2e-3));
+      CHECK_THAT(p.K2, Catch::WithinAbs(K[1], 2e-3));
+      CHECK_THAT(p.K3, Catch::WithinAbs(K[2], 2e-3));
+      const double mu = w.E / (2 * (1 + w.nu));
+      CHECK_THAT(p.G, Catch::WithinRel((1 - w.nu * w.nu) / w.E * (p.K1 * p.K1 + p.K2 * p.K2) +
+                                            p.K3 * p.K3 / (2 * mu), 1e-12));
+    }
+  }
+}
+
+TEST_CASE("stress_intensity: K does not depend on the domain radius", "[stress_intensity]") {
+  const auto cut = straight_cut();
+  const xfem::EnrichedMesh em = enriched_box(4, cut, 10.0);
+  const xfem::WilliamsField w = field(1, 0, 0);
+  const Eigen::VectorXd u = williams_vector(em, w);
+  for (double R : {0.2, 0.3, 0.45}) {
+    xfem::FrontSifOptions o;
+    o.radius = R;
+    o.spacing = 0.25;
+    for (const auto& p : xfem::front_stress_intensity(em, u, w.E, w.nu, Eigen::Vector3d::Zero(), o)) {
+      CHECK(!p.reaches_surface);  // the box's faces x = 0, 1 and z = 0, 1 lie 0.47 m and more away
+      if (!p.end) CHECK_THAT(p.K1, Catch::WithinAbs(1.0, 2e-3));
+    }
+  }
+  // A domain reaching the faces is flagged (the tool warns).
+  xfem::FrontSifOptions o;
+  o.radius = 0.6;
+  o.spacing = 0.25;
+  for (const auto& p : xfem::front_stress_intensity(em, u, w.E, w.nu, Eigen::Vector3d::Zero(), o))
+    if (!p.end) CHECK(p.reaches_surface);  // (the ends' domains hold no surface node off the ends here)
+}
+
+TEST_CASE("stress_intensity: bad input", "[stress_intensity]") {
+  const auto cut = straight_cut();
+  const xfem::EnrichedMesh em = enriched_box(2, cut, 0.0);
+  xfem::FrontSifOptions o;
+  const Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  CHECK_THROWS_WITH(xfem::front_stress_intensity(em, Eigen::VectorXd::Zero(5), 1, 0.3, g, o),
+                    Catch::Contains("expected 3N"));
+  o.plateau = 1.0;
+  CHECK_THROWS_WITH(xfem::front_stress_intensity(em, Eigen::VectorXd::Zero(3 * em.n), 1, 0.3, g, o),
+                    Catch::Contains("plateau"));
+  xfem::EnrichedMesh no_front = em;
+  no_front.front = xfem::CrackFront();
+  CHECK_THROWS_WITH(xfem::front_stress_intensity(no_front, Eigen::VectorXd::Zero(3 * em.n), 1, 0.3, g, {}),
+                    Catch::Contains("no front"));
+}
