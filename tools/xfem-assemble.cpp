@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Global stiffness matrix and load vector of the cut body with its Dirichlet data (paper 3.4-3.6).
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "xfem/assembly.h"
 #include "xfem/cli.h"
 #include "xfem/error.h"
 #include "xfem/enriched_mesh.h"
+#include "xfem/fingerprint.h"
 #include "xfem/linear_system.h"
 #include "xfem/problem.h"
 #include "xfem/version.h"
@@ -39,20 +42,27 @@ int main(int argc, char** argv) {
   app.add_option("--points", points, "oversampling points requested per enriched tet: the tet is split into m^3 "
                                      "sub-tets, m the smallest with m^3 > points, one centroid point each "
                                      "(default: problem.json's integration.points, else 30 as in the paper)")
-      ->check(CLI::Range(1, 100000));
+      ->check(xfem::cli::range(1, 100000));
   app.add_option("--refine", refine, "in cut tets, split sub-tets the cut crosses into 8, up to this many times "
                                      "(0 = the paper's uniform rule; default: problem.json's integration.refine, "
                                      "else 0); small pieces cut off a tet then get integration points")
-      ->check(CLI::Range(0, 8));
+      ->check(xfem::cli::range(0, 8));
   app.add_option("--rule", rule, "integration of tets with enriched DOFs: oversampling (the paper's) or conforming "
                                  "(cut elements split along the cut, Gauss rules collapsed onto the cut front; "
                                  "default: problem.json's integration.rule, else oversampling)")
       ->check(CLI::IsMember({"oversampling", "conforming"}));
   app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
                                    "(default: problem.json's integration.order, else 5)")
-      ->check(CLI::Range(1, 20));
+      ->check(xfem::cli::range(1, 20));
   app.add_option("-o,--output", output, "system directory (created if missing)")->required();
+  bool allow_large = false;
+  app.add_flag("--allow-large", allow_large, "run even when the integration points are estimated above 2e8");
   return xfem::cli::run(*tool, argc, argv, [&] {
+    const std::filesystem::path out_parent = std::filesystem::path(output).has_parent_path()
+                                                 ? std::filesystem::path(output).parent_path()
+                                                 : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(out_parent))
+      throw xfem::Error(output + ": directory " + out_parent.string() + " does not exist");
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
@@ -64,8 +74,29 @@ int main(int argc, char** argv) {
     if (cut_path.empty() && em.n > em.np)
       throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+    if (em.cut) xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
+    {  // cost guard: integration points of the tets with enriched DOFs
+      const double m = std::floor(std::cbrt(static_cast<double>(points))) + 1;  // m^3 > points
+      const double n3 = std::pow(problem.order, 3);
+      double estimate = 0;
+      long enriched_tets = 0;
+      for (int t = 0; t < em.tets(); ++t) {
+        if (em.size(t) == 4) continue;
+        ++enriched_tets;
+        const bool cut = em.cut_class[t] != 0;
+        // Conforming: a cut tet splits into about 24 sub-tets of n^3 points. Oversampling: m^3
+        // points, and refinement splits the ~m^2 sub-tets the cut crosses into 8, `refine` times.
+        estimate += conforming ? (cut ? 24 : 1) * n3 : m * m * m + (cut ? m * m * std::pow(8.0, refine) : 0.0);
+      }
+      if (estimate > 2e8 && !allow_large)
+        throw xfem::Error(input + ": about " + xfem::short_number(estimate) + " integration points in " +
+                          std::to_string(enriched_tets) + " enriched tets (limit 2e8: lower --points/--refine/--order, "
+                          "or give --allow-large)");
+      if (estimate > 1e7)
+        xfem::cli::info("about " + xfem::short_number(estimate) + " integration points: this takes minutes");
+    }
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
                       std::to_string(problem.neumann.size()) + " Neumann conditions, " +
@@ -76,7 +107,15 @@ int main(int argc, char** argv) {
     xfem::AssemblyStats s;
     const xfem::LinearSystem system = xfem::assemble_system(em, problem, points, refine, &s, xfem::cli::progress("assembling"));
     const double write_start = xfem::cli::now();
+    // What the system was made from, so that xfem-solve can record it in u.mtx and later stages
+    // can check the solution against the mesh, cut and problem they are given.
+    xfem::Provenance provenance{{"enriched", xfem::fingerprint(em.mesh)},
+                                {"problem", xfem::fingerprint_json_file(problem_path)}};
+    if (em.cut) provenance["cut"] = xfem::fingerprint(em.cut->mesh());
+    const std::string provenance_path = (std::filesystem::path(output) / "provenance.json").string();
+    std::filesystem::remove(provenance_path);  // never beside a new system while it is written
     xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version);
+    xfem::write_json(xfem::Json{{"fingerprints", xfem::provenance_json(provenance)}}, provenance_path);
     const double write = xfem::cli::now() - write_start;
 
     long constrained = 0;

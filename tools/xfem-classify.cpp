@@ -6,6 +6,7 @@
 #include "xfem/classification.h"
 #include "xfem/cli.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/json_io.h"
 #include "xfem/version.h"
 #include "xfem/vtk_io.h"
@@ -30,8 +31,10 @@ int main(int argc, char** argv) {
   app.add_option("--tip-radius", tip_radius,
                  "also branch-enrich every node within this distance of the cut front (metres; "
                  "default 0 = the paper's rule: nodes of partially cut tets only)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(xfem::cli::non_negative());
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".vtu"});
+    if (!summary.empty()) xfem::cli::check_output(summary, {".json"}, true);
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(body, &warnings);
     std::unique_ptr<xfem::CutSurface> cut;
@@ -42,7 +45,15 @@ int main(int argc, char** argv) {
     xfem::ClassifyOptions options;
     options.tip_radius = tip_radius;
     options.progress = xfem::cli::progress("classifying");
-    const xfem::Classification c = cut ? xfem::classify(mesh, *cut, options) : xfem::classify_without_cut(mesh);
+    const xfem::Classification c = [&] {
+      try {
+        return cut ? xfem::classify(mesh, *cut, options) : xfem::classify_without_cut(mesh);
+      } catch (const xfem::Error& e) {  // the library says "cut: ...": name the file
+        const std::string m = e.what();
+        if (m.rfind("cut: ", 0) == 0) throw xfem::Error(cut_path + m.substr(3));
+        throw;
+      }
+    }();
     const double seconds = xfem::cli::now() - start;
     if (cut && c.counts.cut_edges == 0)
       xfem::cli::warn("the cut misses every edge of " + body + ": nothing is enriched");
@@ -52,6 +63,7 @@ int main(int argc, char** argv) {
                       "unenriched (rule D3)");
 
     xfem::store_classification(c, mesh);
+    if (cut) xfem::store_fingerprint(mesh.field_data, "cut_fingerprint", xfem::fingerprint(cut->mesh()));
     xfem::write_tet_mesh(mesh, output);
 
     const auto names = xfem::count_names();

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Solves the assembled system K u = f with its Dirichlet conditions (issue 5; DESIGN.md stages).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "xfem/cholmod_solver.h"
 #include "xfem/cli.h"
 #include "xfem/dirichlet.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/linear_system.h"
 #include "xfem/petsc_solver.h"
 #include "xfem/version.h"
@@ -53,9 +55,9 @@ int main(int argc, char** argv) {
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   app.add_option("--rtol", rtol, "PETSc: relative residual ||f - K u|| / ||f|| to reach (default 1e-10)")
-      ->check(CLI::PositiveNumber);
+      ->check(xfem::cli::positive());
   app.add_option("--max-iterations", max_iterations, "PETSc: CG iteration limit (default 10000)")
-      ->check(CLI::PositiveNumber);
+      ->check(xfem::cli::range(1, 1e9));
   app.add_option("--near-null-space", near_null, "PETSc: GAMG near-null space: rigid (rigid-body modes of the original "
                                                  "DOFs, needs coordinates.mtx; default), rigid-enriched (also the "
                                                  "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
@@ -71,8 +73,10 @@ int main(int argc, char** argv) {
                  "DOFs: sign/branch DOFs with a tiny but non-zero support on one side of the cut (TOL ~ the volume "
                  "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
                  "of K is exactly zero are always fixed to 0, with a warning")
-      ->check(CLI::NonNegativeNumber);
+      ->check(xfem::cli::non_negative());
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".mtx"}, true);
+    if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
     std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
     const bool root = !mpi || mpi->rank() == 0;
@@ -169,7 +173,12 @@ int main(int argc, char** argv) {
       throw xfem::Error("the solution is inaccurate (relative residual " + g(residual) +
                         "): K is numerically singular; no output written");
     if (root) {
-      xfem::write_vector(u, output);
+      // The fingerprints of the system's inputs (recorded by xfem-assemble) travel with u.
+      xfem::Provenance provenance;
+      const std::string provenance_path = (std::filesystem::path(dir) / "provenance.json").string();
+      if (std::filesystem::exists(provenance_path))
+        provenance = xfem::provenance_from_json(xfem::read_json(provenance_path), provenance_path);
+      xfem::write_vector(u, output, xfem::provenance_comments(provenance));
       if (!report_path.empty()) xfem::write_json(report, report_path);
     }
   });

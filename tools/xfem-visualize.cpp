@@ -8,6 +8,7 @@
 #include "xfem/element_split.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/matrix_market.h"
 #include "xfem/problem.h"
 #include "xfem/snapshot.h"
@@ -36,23 +37,31 @@ int main(int argc, char** argv) {
   app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp)");
   app.add_option("--png", png, "also render a picture (needs an X display: run under xvfb-run -a)");
   app.add_option("--scale", scale, "displacement magnification in the picture only (files keep the true "
-                                   "displacement)")->check(CLI::PositiveNumber);
-  app.add_option("--width", width, "picture width, pixels")->check(CLI::Range(64, 8192));
-  app.add_option("--height", height, "picture height, pixels")->check(CLI::Range(64, 8192));
+                                   "displacement)")->check(xfem::cli::range(1e-6, 1e6));
+  app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
+  app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   bool no_edges = false;
   app.add_flag("--no-edges", no_edges, "picture without element edges (clearer for fine meshes)");
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".vtu"});
+    if (!faces.empty()) xfem::cli::check_output(faces, {".vtp"});
+    if (!png.empty()) xfem::cli::check_output(png, {".png"});
     if (!png.empty() && !std::getenv("DISPLAY"))
       throw xfem::Error(png + ": rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
     const xfem::Problem problem = xfem::read_problem(problem_path);
     std::vector<std::string> warnings;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
+    xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     const Eigen::VectorXd u = xfem::read_vector(solution);
     if (u.size() != 3 * em.n)
       throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
                         std::to_string(3 * em.n) + " for " + input);
+    const xfem::Provenance made_for = xfem::read_mtx_provenance(solution);
+    xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), input);
+    xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
+    xfem::check_provenance(made_for, solution, "problem", xfem::fingerprint_json_file(problem_path), problem_path);
 
     const xfem::SplitMesh split = xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +

@@ -39,6 +39,7 @@
 #include <type_traits>
 #include <map>
 #include <mutex>
+#include <new>
 #include <queue>
 
 #include "xfem/atomic_file.h"
@@ -134,7 +135,12 @@ class VtkMessages {
 template <class Algorithm>
 void update_or_throw(Algorithm* algorithm, const VtkMessages& messages, const std::string& path,
                      const char* what) {
-  algorithm->Update();
+  try {
+    algorithm->Update();
+  } catch (const std::bad_alloc&) {
+    // A corrupt size (e.g. a compressed block header of a .vtu) makes VTK allocate for it.
+    throw Error(path + ": cannot read " + what + ": a size in the file is too large to allocate (corrupt file?)");
+  }
   messages.throw_if_error(path + ": cannot read " + what);
 }
 
@@ -207,6 +213,12 @@ void add_arrays(vtkFieldData* out, const DataArrays& arrays, std::size_t tuples,
     if (tuples != std::string::npos && array.tuples() != tuples)
       throw Error(context + " array '" + name + "': " + std::to_string(array.tuples()) + " tuples for " +
                   std::to_string(tuples) + " items");
+    // A NaN or Inf in an output is never a result: refuse it, naming the quantity.
+    for (std::size_t i = 0; i < array.values.size(); ++i)
+      if (!std::isfinite(array.values[i]))
+        throw Error(path + ": refusing to write a non-finite value (" + short_number(array.values[i]) + ") in " +
+                    where + " array '" + name + "' at tuple " + std::to_string(i / array.components) +
+                    " (overflow: are the inputs' magnitudes sane?)");
     out->AddArray(to_vtk(name, array, context));
   }
 }
@@ -221,7 +233,10 @@ Points to_points(vtkPoints* in) {
   return out;
 }
 
-Ptr<vtkPoints> to_vtk(const Points& in) {
+Ptr<vtkPoints> to_vtk(const Points& in, const std::string& name) {
+  for (Eigen::Index i = 0; i < in.rows(); ++i)
+    if (!in.row(i).allFinite())
+      throw Error(name + ": refusing to write point " + std::to_string(i) + ": a coordinate is not finite");
   auto out = Ptr<vtkPoints>::New();
   out->SetDataTypeToDouble();
   out->SetNumberOfPoints(in.rows());
@@ -263,6 +278,43 @@ void copy_cell(int type, vtkIdType npts, const vtkIdType* ids, vtkIdType i, int 
   }
 }
 
+// VTK's legacy reader fills a POINTS section that ends early with invented points (and reads a
+// huge count as an allocation): check the count against what the file holds before VTK sees it.
+void check_legacy_points(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::size_t at = 0;
+  while ((at = text.find("POINTS", at)) != std::string::npos && at > 0 && text[at - 1] != '\n') at += 6;
+  if (at == std::string::npos) return;
+  std::istringstream header(text.substr(at, 200));
+  std::string keyword, type;
+  long long n = -1;
+  header >> keyword >> n >> type;
+  if (!header || n < 0) throw Error(path + ": malformed POINTS line in the legacy VTK file");
+  const std::size_t data = text.find('\n', at);
+  const std::size_t left = data == std::string::npos ? 0 : text.size() - data - 1;
+  const bool binary = text.find("\nBINARY") != std::string::npos && text.find("\nBINARY") < at;
+  if (binary) {
+    const std::size_t bytes = type == "double" ? 8 : 4;
+    if (static_cast<unsigned long long>(n) > left / (3 * bytes))
+      throw Error(path + ": POINTS claims " + std::to_string(n) + " points but the file holds fewer");
+    return;
+  }
+  // ASCII: count the numbers up to the next keyword.
+  long long numbers = 0;
+  const char* p = text.data() + (data == std::string::npos ? text.size() : data + 1);
+  const char* end = text.data() + text.size();
+  while (p < end && numbers < 3 * n) {
+    while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+    if (p == end || std::isalpha(static_cast<unsigned char>(*p))) break;
+    while (p < end && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+    ++numbers;
+  }
+  if (numbers < 3 * n)
+    throw Error(path + ": POINTS claims " + std::to_string(n) + " points but only " + std::to_string(numbers) +
+                " coordinates follow (" + std::to_string(3 * n) + " expected)");
+}
+
 template <class Reader>
 void configure_legacy(Reader* reader) {
   reader->ReadAllScalarsOn();
@@ -294,6 +346,7 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
     return reader->GetOutput();
   }
   if (ext == ".vtk") {
+    check_legacy_points(path);
     auto reader = Ptr<vtkDataSetReader>::New();
     reader->SetFileName(path.c_str());
     configure_legacy(reader.Get());
@@ -402,7 +455,7 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
   const std::string name = path == "-" ? std::string("<stdout>") : path;
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
-  grid->SetPoints(to_vtk(mesh.points));
+  grid->SetPoints(to_vtk(mesh.points, name));
   auto offsets = Ptr<vtkIdTypeArray>::New();
   auto connectivity = Ptr<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(mesh.tets.rows() + 1);
@@ -427,6 +480,28 @@ TriangleMesh read_off(const std::string& path) {
   std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::ifstream in(path);
+  {  // The counts in the header, checked against the file's size before CGAL allocates for them.
+    std::vector<std::string> words;  // the first words, comments left out
+    std::string line, word;
+    while (words.size() < 3 && std::getline(in, line)) {
+      std::istringstream split(line.substr(0, line.find('#')));
+      while (words.size() < 3 && split >> word) words.push_back(word);
+    }
+    if (!words.empty() && words[0].find("OFF") != std::string::npos) words.erase(words.begin());
+    long long nv = -1, nf = -1;
+    if (words.size() >= 2) {
+      std::istringstream(words[0]) >> nv;
+      std::istringstream(words[1]) >> nf;
+    }
+    in.clear();
+    in.seekg(0, std::ios::end);
+    const long long size = static_cast<long long>(in.tellg());
+    if (nv < 0 || nf < 0) throw Error(path + ": not a readable OFF file (no vertex and face counts)");
+    if (nv > size / 6 + 1 || nf > size / 8 + 1)
+      throw Error(path + ": the OFF header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                  " faces, more than the " + std::to_string(size) + " bytes of the file can hold");
+    in.seekg(0);
+  }
   // verbose(false): CGAL would otherwise explain its failure on std::cerr.
   if (!CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false)))
     throw Error(path + ": not a readable OFF file");
@@ -615,6 +690,7 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
       update_or_throw(reader.Get(), messages, name, what);
       mesh = from_polydata(reader->GetOutput(), name);
     } else if (ext == ".vtk") {
+      check_legacy_points(path);
       auto reader = Ptr<vtkDataSetReader>::New();
       reader->SetFileName(path.c_str());
       configure_legacy(reader.Get());
@@ -654,7 +730,7 @@ void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
   const std::string name = path == "-" ? std::string("<stdout>") : path;
   VtkMessages messages;
   auto poly = Ptr<vtkPolyData>::New();
-  poly->SetPoints(to_vtk(mesh.points));
+  poly->SetPoints(to_vtk(mesh.points, name));
   auto offsets = Ptr<vtkIdTypeArray>::New();
   auto connectivity = Ptr<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(mesh.triangles.rows() + 1);
