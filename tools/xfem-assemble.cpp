@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Global stiffness matrix and load vector of the cut body with its Dirichlet data (paper 3.4-3.6).
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -58,11 +60,13 @@ int main(int argc, char** argv) {
   bool allow_large = false;
   app.add_flag("--allow-large", allow_large, "run even when the integration points are estimated above 2e8");
   return xfem::cli::run(*tool, argc, argv, [&] {
-    const std::filesystem::path out_parent = std::filesystem::path(output).has_parent_path()
-                                                 ? std::filesystem::path(output).parent_path()
-                                                 : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(out_parent))
-      throw xfem::Error(output + ": directory " + out_parent.string() + " does not exist");
+    {  // the system directory is created if missing: its nearest existing ancestor must be writable
+      std::filesystem::path dir = std::filesystem::absolute(output);
+      while (!std::filesystem::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) dir = dir.parent_path();
+      if (!std::filesystem::is_directory(dir))
+        throw xfem::Error(output + ": " + dir.string() + " is not a directory");
+      if (::access(dir.c_str(), W_OK) != 0) throw xfem::Error(output + ": directory " + dir.string() + " is not writable");
+    }
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
