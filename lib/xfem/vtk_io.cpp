@@ -31,6 +31,8 @@
 #include <CGAL/IO/OFF.h>
 #include <cctype>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -40,6 +42,7 @@
 #include <map>
 #include <mutex>
 #include <new>
+#include <stdexcept>
 #include <queue>
 
 #include "xfem/atomic_file.h"
@@ -139,6 +142,8 @@ void update_or_throw(Algorithm* algorithm, const VtkMessages& messages, const st
     algorithm->Update();
   } catch (const std::bad_alloc&) {
     // A corrupt size (e.g. a compressed block header of a .vtu) makes VTK allocate for it.
+    throw Error(path + ": cannot read " + what + ": a size in the file is too large to allocate (corrupt file?)");
+  } catch (const std::length_error&) {
     throw Error(path + ": cannot read " + what + ": a size in the file is too large to allocate (corrupt file?)");
   }
   messages.throw_if_error(path + ": cannot read " + what);
@@ -278,41 +283,124 @@ void copy_cell(int type, vtkIdType npts, const vtkIdType* ids, vtkIdType i, int 
   }
 }
 
-// VTK's legacy reader fills a POINTS section that ends early with invented points (and reads a
-// huge count as an allocation): check the count against what the file holds before VTK sees it.
-void check_legacy_points(const std::string& path) {
+// VTK 9.1's legacy reader fills a POINTS section that ends early with invented points, reads a
+// huge count as an allocation, and crashes (null stream) on a cell section shorter than its
+// header says. So each section header is checked against what the file holds before VTK sees it:
+// POINTS n (3n numbers), CELLS / POLYGONS / LINES / VERTICES / TRIANGLE_STRIPS n size (size
+// numbers, size >= 2n... at least one id per cell), CELL_TYPES n (n numbers).
+void check_legacy_sections(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::size_t at = 0;
-  while ((at = text.find("POINTS", at)) != std::string::npos && at > 0 && text[at - 1] != '\n') at += 6;
-  if (at == std::string::npos) return;
-  std::istringstream header(text.substr(at, 200));
-  std::string keyword, type;
-  long long n = -1;
-  header >> keyword >> n >> type;
-  if (!header || n < 0) throw Error(path + ": malformed POINTS line in the legacy VTK file");
-  const std::size_t data = text.find('\n', at);
-  const std::size_t left = data == std::string::npos ? 0 : text.size() - data - 1;
-  const bool binary = text.find("\nBINARY") != std::string::npos && text.find("\nBINARY") < at;
-  if (binary) {
-    const std::size_t bytes = type == "double" ? 8 : 4;
-    if (static_cast<unsigned long long>(n) > left / (3 * bytes))
-      throw Error(path + ": POINTS claims " + std::to_string(n) + " points but the file holds fewer");
-    return;
-  }
-  // ASCII: count the numbers up to the next keyword.
-  long long numbers = 0;
-  const char* p = text.data() + (data == std::string::npos ? text.size() : data + 1);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t binary_at = text.find("\nBINARY");
   const char* end = text.data() + text.size();
-  while (p < end && numbers < 3 * n) {
-    while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
-    if (p == end || std::isalpha(static_cast<unsigned char>(*p))) break;
-    while (p < end && !std::isspace(static_cast<unsigned char>(*p))) ++p;
-    ++numbers;
+  std::size_t line_start = 0;
+  while (line_start < text.size()) {
+    std::size_t line_end = text.find('\n', line_start);
+    if (line_end == std::string::npos) line_end = text.size();
+    if (!std::isupper(static_cast<unsigned char>(text[line_start]))) {  // fast path: data lines
+      line_start = line_end + 1;
+      continue;
+    }
+    std::istringstream header(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200)));
+    std::string keyword;
+    header >> keyword;
+    const bool points = keyword == "POINTS", types = keyword == "CELL_TYPES";
+    const bool cells = keyword == "CELLS" || keyword == "POLYGONS" || keyword == "LINES" || keyword == "VERTICES" ||
+                       keyword == "TRIANGLE_STRIPS";
+    if (points || types || cells) {
+      long long n = -1, size = -1;
+      std::string type;
+      header >> n;
+      if (cells) header >> size;
+      if (points) header >> type;
+      if (!header || n < 0 || (cells && size < 0))
+        throw Error(path + ": malformed " + keyword + " line in the legacy VTK file");
+      const std::size_t data = std::min(line_end + 1, text.size());
+      const bool new_cells = cells && text.compare(data, 7, "OFFSETS") == 0;  // VTK 5.1 layout
+      if (cells && !new_cells && size < 2 * n)
+        throw Error(path + ": " + keyword + " " + std::to_string(n) + " " + std::to_string(size) +
+                    ": too few values for that many cells");
+      const long long want = points ? 3 * n : cells ? size : n;
+      const long long left = static_cast<long long>(text.size() - data);
+      if (binary_at != std::string::npos && binary_at < line_start) {
+        const long long bytes = points ? (type == "double" ? 8 : 4) : 4;
+        if (!new_cells && want > left / bytes)
+          throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items but the file holds fewer");
+      } else if (!new_cells) {
+        long long numbers = 0;  // ASCII: count the numbers up to the next keyword
+        const char* p = text.data() + data;
+        while (p < end && numbers < want) {
+          while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+          if (p == end || std::isalpha(static_cast<unsigned char>(*p))) break;
+          const char* token = p;
+          while (p < end && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+          const std::string word(token, std::min<std::size_t>(p - token, 40));
+          char* stop = nullptr;
+          std::strtod(word.c_str(), &stop);
+          if (stop != word.c_str() + word.size()) {
+            std::string shown(token, std::min<std::size_t>(p - token, 20));
+            for (char& c : shown)  // one printable line
+              if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+            throw Error(path + ": " + keyword + " section: '" + shown + "' is not a number");
+          }
+          ++numbers;
+        }
+        if (numbers < want)
+          throw Error(path + ": " + keyword + " claims " + std::to_string(n) +
+                      (points ? " points but only " : " items but only ") + std::to_string(numbers) +
+                      (points ? " coordinates" : " values") + " follow (" + std::to_string(want) + " expected)");
+      }
+    }
+    line_start = line_end + 1;
   }
-  if (numbers < 3 * n)
-    throw Error(path + ": POINTS claims " + std::to_string(n) + " points but only " + std::to_string(numbers) +
-                " coordinates follow (" + std::to_string(3 * n) + " expected)");
+}
+
+// VTK 9.1's XML reader divides by a zero block size (SIGFPE) and allocates whatever a corrupt
+// compressed-block header or a NumberOfPoints attribute claims. For appended raw data (what the
+// writers here produce) each array's header is checked against the file's size first.
+void check_xml_sizes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t appended = std::min(text.find("<AppendedData"), text.size());
+  const unsigned long long size = text.size();
+  const auto corrupt = [&](const std::string& what) { return Error(path + ": " + what + " (corrupt file?)"); };
+  // Counts: zlib expands at most ~1032:1, so no honest file holds more items than that.
+  for (const char* key : {"NumberOfPoints=\"", "NumberOfCells=\"", "NumberOfPolys=\"", "NumberOfTuples=\""})
+    for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
+      const unsigned long long n = std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
+      if (n > 1100 * size)
+        throw corrupt(std::string(key, std::strlen(key) - 2) + " = " + std::to_string(n) + " is more than " +
+                      std::to_string(size) + " bytes can hold");
+    }
+  if (appended == text.size() || text.find("byte_order=\"BigEndian\"") < appended) return;
+  const std::size_t underscore = text.find('_', text.find('>', appended));
+  if (underscore == std::string::npos) return;
+  const unsigned long long data = underscore + 1;
+  const bool wide = text.find("header_type=\"UInt64\"") < appended;
+  const bool compressed = text.find("compressor=") < appended;
+  const unsigned long long h = wide ? 8 : 4;
+  const auto word = [&](unsigned long long at) {
+    unsigned long long v = 0;
+    for (unsigned long long b = 0; b < h; ++b) v |= static_cast<unsigned long long>(static_cast<unsigned char>(text[at + b])) << (8 * b);
+    return v;
+  };
+  const char* key = "offset=\"";
+  for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
+    const unsigned long long pos = data + std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
+    if (pos > size || size - pos < (compressed ? 3 : 1) * h) throw corrupt("an array's data lies beyond the end of the file");
+    if (!compressed) {
+      if (word(pos) > size - pos - h) throw corrupt("an array claims more bytes than the file holds");
+      continue;
+    }
+    const unsigned long long blocks = word(pos), block = word(pos + h), last = word(pos + 2 * h);
+    if (blocks > (size - pos) / h - 3) throw corrupt("a compressed array claims more blocks than the file holds");
+    if (blocks > 0 && (block == 0 || block > (1ULL << 31) || last > block))
+      throw corrupt("a compressed array has an impossible block size");
+    unsigned long long total = 0;
+    for (unsigned long long b = 0; b < blocks; ++b) total += word(pos + (3 + b) * h);
+    if (total > size - pos - (3 + blocks) * h) throw corrupt("a compressed array claims more bytes than the file holds");
+    if (blocks * block > 1100 * size) throw corrupt("a compressed array expands to more than its file can hold");
+  }
 }
 
 template <class Reader>
@@ -341,12 +429,13 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
     auto reader = Ptr<vtkXMLUnstructuredGridReader>::New();
     if (!reader->CanReadFile(path.c_str()))
       throw Error(path + ": not a VTK XML unstructured grid (.vtu) file");
+    check_xml_sizes(path);
     reader->SetFileName(path.c_str());
     update_or_throw(reader.Get(), messages, path, what);
     return reader->GetOutput();
   }
   if (ext == ".vtk") {
-    check_legacy_points(path);
+    check_legacy_sections(path);
     auto reader = Ptr<vtkDataSetReader>::New();
     reader->SetFileName(path.c_str());
     configure_legacy(reader.Get());
@@ -685,12 +774,13 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
         reader->SetInputString(read_stdin());
       } else {
         if (!reader->CanReadFile(path.c_str())) throw Error(path + ": not a VTK XML polydata (.vtp) file");
+        check_xml_sizes(path);
         reader->SetFileName(path.c_str());
       }
       update_or_throw(reader.Get(), messages, name, what);
       mesh = from_polydata(reader->GetOutput(), name);
     } else if (ext == ".vtk") {
-      check_legacy_points(path);
+      check_legacy_sections(path);
       auto reader = Ptr<vtkDataSetReader>::New();
       reader->SetFileName(path.c_str());
       configure_legacy(reader.Get());

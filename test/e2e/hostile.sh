@@ -107,7 +107,7 @@ absent "$S/big.vtu" "$S/big.vtp" "$S/sys6"
 
 # 6. Malformed input.
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 104 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n' >"$S/phantom.vtk"
-expect 1 "phantom.vtk: POINTS claims 104 points but only 12 coordinates follow" \
+expect 1 "phantom.vtk: POINTS claims 104 points but only 12 coordinates follow (312 expected)" \
   "$B/xfem-classify" "$S/phantom.vtk" -o "$S/n.vtu"
 { cat "$S/u.mtx"; echo 1.5; } >"$S/extra.mtx"
 expect 1 "extra.mtx: line" "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/extra.mtx" -p "$PROBLEM" -o "$S/n.vtu"
