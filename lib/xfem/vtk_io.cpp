@@ -394,7 +394,7 @@ void check_xml_sizes(const std::string& path) {
     }
     const unsigned long long blocks = word(pos), block = word(pos + h), last = word(pos + 2 * h);
     if (blocks > (size - pos) / h - 3) throw corrupt("a compressed array claims more blocks than the file holds");
-    if (blocks > 0 && (block == 0 || block > (1ULL << 31) || last > block))
+    if ((blocks > 0 && block == 0) || block > (1ULL << 31) || last > block)  // VTK allocates `block` even for 0 blocks
       throw corrupt("a compressed array has an impossible block size");
     unsigned long long total = 0;
     for (unsigned long long b = 0; b < blocks; ++b) total += word(pos + (3 + b) * h);
