@@ -315,8 +315,11 @@ void check_legacy_sections(const std::string& path) {
       if (points) header >> type;
       if (!header || n < 0 || (cells && size < 0))
         throw Error(path + ": malformed " + keyword + " line in the legacy VTK file");
+      if (n > static_cast<long long>(text.size()) || size > static_cast<long long>(text.size()))
+        throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items, more than the file can hold");
       const std::size_t data = std::min(line_end + 1, text.size());
-      const bool new_cells = cells && text.compare(data, 7, "OFFSETS") == 0;  // VTK 5.1 layout
+      const bool new_cells = cells && text.compare(data, 7, "OFFSETS") == 0 &&  // VTK 5.1 layout
+                             text.compare(0, 24, "# vtk DataFile Version 5") == 0;
       if (cells && !new_cells && size < 2 * n)
         throw Error(path + ": " + keyword + " " + std::to_string(n) + " " + std::to_string(size) +
                     ": too few values for that many cells");
@@ -328,6 +331,7 @@ void check_legacy_sections(const std::string& path) {
           throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items but the file holds fewer");
       } else if (!new_cells) {
         long long numbers = 0;  // ASCII: count the numbers up to the next keyword
+        long long next_cell = 0, cells_seen = 0;  // cell sections: each cell is "k id_1 .. id_k"
         const char* p = text.data() + data;
         while (p < end && numbers < want) {
           while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
@@ -343,8 +347,18 @@ void check_legacy_sections(const std::string& path) {
               if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
             throw Error(path + ": " + keyword + " section: '" + shown + "' is not a number");
           }
+          if (cells && numbers == next_cell) {  // a cell's point count
+            const double k = std::strtod(word.c_str(), nullptr);
+            if (!(k >= 1 && k <= 1000) || ++cells_seen > n)
+              throw Error(path + ": " + keyword + " section: cell " + std::to_string(cells_seen) +
+                          " has an impossible point count or there are more cells than " + std::to_string(n));
+            next_cell = numbers + 1 + static_cast<long long>(k);
+          }
           ++numbers;
         }
+        if (cells && numbers == want && (next_cell != want || cells_seen != n))
+          throw Error(path + ": " + keyword + " " + std::to_string(n) + " " + std::to_string(size) +
+                      ": the cells' point counts do not add up to the section's size");
         if (numbers < want)
           throw Error(path + ": " + keyword + " claims " + std::to_string(n) +
                       (points ? " points but only " : " items but only ") + std::to_string(numbers) +
