@@ -13,6 +13,7 @@ packages=(
   catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
   xvfb xauth gnuplot-nox python3                   # headless PNG snapshots, plots, tables
   time                                             # GNU /usr/bin/time: peak memory in bench/bench.py
+  clang libclang-rt-14-dev                         # make sanitize (ASan, UBSan) and make fuzz (libFuzzer)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Global stiffness matrix and load vector of the cut body with its Dirichlet data (paper 3.4-3.6).
+#include <unistd.h>
+
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "xfem/assembly.h"
 #include "xfem/cli.h"
 #include "xfem/error.h"
 #include "xfem/enriched_mesh.h"
+#include "xfem/fingerprint.h"
 #include "xfem/linear_system.h"
 #include "xfem/problem.h"
 #include "xfem/reactions.h"
@@ -46,12 +51,12 @@ int main(int argc, char** argv) {
                                      "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
                                      "with m^3 > points, one centroid point each (default: problem.json's "
                                      "integration.points, else 30 as in the paper)")
-      ->check(CLI::Range(1, 100000));
+      ->check(xfem::cli::range(1, 100000));
   app.add_option("--refine", refine, "oversampling rule (implies --rule oversampling): in cut tets, split sub-tets "
                                      "the cut crosses into 8, up to this many times "
                                      "(0 = the paper's uniform rule; default: problem.json's integration.refine, "
                                      "else 0); small pieces cut off a tet then get integration points")
-      ->check(CLI::Range(0, 8));
+      ->check(xfem::cli::range(0, 8));
   app.add_option("--rule", rule, "integration of tets with enriched DOFs: conforming (the default: cut elements "
                                  "split exactly along the cut, one point per piece for the sign enrichment, Gauss "
                                  "rules collapsed onto the cut front where branch functions live) or oversampling "
@@ -59,14 +64,23 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"oversampling", "conforming"}));
   app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
                                    "(default: problem.json's integration.order, else 3)")
-      ->check(CLI::Range(1, 20));
+      ->check(xfem::cli::range(1, 20));
   app.add_option("-o,--output", output, "system directory (created, or replaced as a whole when it holds an older "
                                        "system)")->required();
   app.add_option("--format", format, "how K, f and the coordinates are stored: petsc (binary, default; what xfem-solve "
                                      "loads fastest, in parallel) or mtx (Matrix Market text, for scipy and other "
                                      "readers; xfem-solve reads it too)")
       ->check(CLI::IsMember({"petsc", "mtx"}));
+  bool allow_large = false;
+  app.add_flag("--allow-large", allow_large, "run even when the integration points are estimated above 2e8");
   return xfem::cli::run(*tool, argc, argv, [&] {
+    {  // the system directory is created if missing: its nearest existing ancestor must be writable
+      std::filesystem::path dir = std::filesystem::absolute(output);
+      while (!std::filesystem::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) dir = dir.parent_path();
+      if (!std::filesystem::is_directory(dir))
+        throw xfem::Error(output + ": " + dir.string() + " is not a directory");
+      if (::access(dir.c_str(), W_OK) != 0) throw xfem::Error(output + ": directory " + dir.string() + " is not writable");
+    }
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
@@ -79,8 +93,29 @@ int main(int argc, char** argv) {
     if (cut_path.empty() && em.n > em.np)
       throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+    if (em.cut) xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
+    {  // cost guard: integration points of the tets with enriched DOFs
+      const double m = std::floor(std::cbrt(static_cast<double>(points))) + 1;  // m^3 > points
+      const double n3 = std::pow(problem.order, 3);
+      double estimate = 0;
+      long enriched_tets = 0;
+      for (int t = 0; t < em.tets(); ++t) {
+        if (em.size(t) == 4) continue;
+        ++enriched_tets;
+        const bool cut = em.cut_class[t] != 0;
+        // Conforming: a cut tet splits into about 24 sub-tets of n^3 points. Oversampling: m^3
+        // points, and refinement splits the ~m^2 sub-tets the cut crosses into 8, `refine` times.
+        estimate += conforming ? (cut ? 24 : 1) * n3 : m * m * m + (cut ? m * m * std::pow(8.0, refine) : 0.0);
+      }
+      if (estimate > 2e8 && !allow_large)
+        throw xfem::Error(input + ": about " + xfem::short_number(estimate) + " integration points in " +
+                          std::to_string(enriched_tets) + " enriched tets (limit 2e8: lower --points/--refine/--order, "
+                          "or give --allow-large)");
+      if (estimate > 1e7)
+        xfem::cli::info("about " + xfem::short_number(estimate) + " integration points: this takes minutes");
+    }
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
                       std::to_string(problem.neumann.size()) + " Neumann conditions, " +
@@ -91,11 +126,18 @@ int main(int argc, char** argv) {
     xfem::AssemblyStats s;
     const xfem::LinearSystem system = xfem::assemble_system(em, problem, points, refine, &s, xfem::cli::progress("assembling"));
     const double write_start = xfem::cli::now();
+    // What the system was made from, so that xfem-solve can record it in u.mtx and later stages
+    // can check the solution against the mesh, cut and problem they are given.
+    xfem::Provenance provenance{{"enriched", xfem::fingerprint(em.mesh)},
+                                {"problem", xfem::fingerprint_json_file(problem_path)}};
+    if (em.cut) provenance["cut"] = xfem::fingerprint(em.cut->mesh());
+    const std::string provenance_path = (std::filesystem::path(output) / "provenance.json").string();
     xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version,
                               format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc);
-    // Which condition fixes which DOF: xfem-solve sums the reaction forces per condition. Written
-    // into the finished directory (xfem-solve reports one total without it).
+    // Written into the finished directory: which condition fixes which DOF (xfem-solve sums the
+    // reaction forces per condition; one total without it) and the fingerprints.
     xfem::write_dirichlet_groups(xfem::dirichlet_groups(em.mesh, problem), output, std::string("xfem-assemble ") + xfem::version);
+    xfem::write_json(xfem::Json{{"fingerprints", xfem::provenance_json(provenance)}}, provenance_path);
     const double write = xfem::cli::now() - write_start;
 
     long constrained = 0;

@@ -6,6 +6,7 @@
 #include "xfem/classification.h"
 #include "xfem/cli.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/json_io.h"
 #include "xfem/version.h"
 #include "xfem/vtk_io.h"
@@ -30,12 +31,14 @@ int main(int argc, char** argv) {
   app.add_option("--tip-radius", tip_radius,
                  "also branch-enrich every node within this distance of the cut front (metres; "
                  "default 0 = the paper's rule: nodes of partially cut tets only)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(xfem::cli::non_negative());
   app.add_option("--tiny-support", tiny_support,
                  "sign-enrich a node only if at least this fraction of its support's volume lies on the other "
                  "side of the cut (dimensionless, default 1e-8, where xfem-solve starts to warn of a near-singular K; 1e-4 is common with iterative solvers but breaks the exact representation of a cut body: see docs/CLASSIFICATION.md)")
-      ->check(CLI::Range(0.0, 0.5));
+      ->check(xfem::cli::range(0.0, 0.5));
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".vtu"});
+    if (!summary.empty()) xfem::cli::check_output(summary, {".json"}, true);
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(body, &warnings);
     std::unique_ptr<xfem::CutSurface> cut;
@@ -47,7 +50,15 @@ int main(int argc, char** argv) {
     options.tip_radius = tip_radius;
     options.tiny_support = tiny_support;
     options.progress = xfem::cli::progress("classifying");
-    const xfem::Classification c = cut ? xfem::classify(mesh, *cut, options) : xfem::classify_without_cut(mesh);
+    const xfem::Classification c = [&] {
+      try {
+        return cut ? xfem::classify(mesh, *cut, options) : xfem::classify_without_cut(mesh);
+      } catch (const xfem::Error& e) {  // the library says "cut: ...": name the file
+        const std::string m = e.what();
+        if (m.rfind("cut: ", 0) == 0) throw xfem::Error(cut_path + m.substr(3));
+        throw;
+      }
+    }();
     const double seconds = xfem::cli::now() - start;
     if (cut && c.counts.partial + c.counts.complete == 0)
       xfem::cli::info("the cut does not enter " + body + ": nothing is enriched");
@@ -58,6 +69,7 @@ int main(int argc, char** argv) {
                         "the cut still opens through their neighbours' enrichment)");
 
     xfem::store_classification(c, mesh);
+    if (cut) xfem::store_fingerprint(mesh.field_data, "cut_fingerprint", xfem::fingerprint(cut->mesh()));
     xfem::write_tet_mesh(mesh, output);
 
     const auto names = xfem::count_names();

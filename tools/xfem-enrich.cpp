@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   app.add_option("-c,--cut", cut_path, "accepted for symmetry with the later stages and ignored: the numbering needs "
                                        "only the classification");
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".vtu"});
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(input, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);

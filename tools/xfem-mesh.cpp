@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Makes every input the pipelines need: structured and unstructured tet meshes, cut surfaces.
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "xfem/box_mesh.h"
@@ -17,10 +18,13 @@ using V3 = std::array<double, 3>;
 Eigen::Vector3d vec(const V3& a) { return {a[0], a[1], a[2]}; }
 Eigen::Vector2i pair(const std::vector<int>& n) { return {n[0], n.size() > 1 ? n[1] : n[0]}; }
 
+bool allow_large = false;  // --allow-large, on every command
+
 CLI::App* command(CLI::App& app, const char* name, const char* what, const char* example, std::string& out) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->footer(std::string("Example:\n  xfem-mesh ") + example);
   sub->add_option("-o,--output", out, "output file (.vtu for meshes; .vtp, or .vtu, for cuts)")->required();
+  sub->add_flag("--allow-large", allow_large, "run even when the estimate exceeds 2e7 tets or triangles");
   return sub;
 }
 
@@ -33,6 +37,26 @@ void write_cut(const xfem::TriangleMesh& m, const std::string& out) {
   xfem::write_triangle_mesh(m, out);
   xfem::cli::info(std::to_string(m.triangles.rows()) + " triangles, area " + std::to_string(xfem::surface_area(m)) +
                   " m^2 -> " + out);
+}
+
+// Cost guard: meshes beyond this many tets (or cuts beyond this many triangles) take hours or
+// exhaust memory; refused with the estimate unless --allow-large.
+constexpr double kMaxElements = 2e7;
+
+void guard(double estimate, const char* what, bool allowed) {
+  if (!(estimate <= kMaxElements) && !allowed)
+    throw xfem::Error("about " + xfem::short_number(estimate) + " " + what + " requested (limit " +
+                      xfem::short_number(kMaxElements) + "; a larger --size or fewer divisions, or --allow-large)");
+}
+
+// Regular tets of edge `size` fill a volume V with about 6 sqrt(2) V / size^3 tets.
+double tets_for(double volume, double size) { return 6 * std::sqrt(2.0) * volume / (size * size * size); }
+
+// Coordinates beyond 1e6 m are not a body this tool meshes (and overflow volumes and CGAL).
+void check_extent(const V3& a, const char* option) {
+  for (double v : a)
+    if (!(std::fabs(v) <= 1e6))
+      throw xfem::Error(std::string(option) + " " + xfem::short_number(v) + ": coordinates must lie within 1e6 m of the origin");
 }
 
 }  // namespace
@@ -70,17 +94,17 @@ int main(int argc, char** argv) {
   ubox->add_option("--lo", lo, "lower corner, m (default 0 0 0)");
   ubox->add_option("--hi", hi, "upper corner, m")->required();
   const char* size_help = "target edge length, m (tet count grows like 1/size^3)";
-  ubox->add_option("--size", size, size_help)->required();
+  ubox->add_option("--size", size, size_help)->required()->check(xfem::cli::positive());
 
   auto* organ = command(app, "organ", "unstructured tet mesh of an organ-like smooth body 0.15 m long centred at the "
                                       "origin (a bent, tapered ellipsoid; docs/FORMATS.md)",
                         "organ --size 0.008 -o organ.vtu", out);
-  organ->add_option("--size", size, size_help)->required();
+  organ->add_option("--size", size, size_help)->required()->check(xfem::cli::positive());
 
   auto* surf = command(app, "surface", "unstructured tet mesh of the volume inside a closed triangle surface",
                        "surface body.stl --size 0.005 -o body.vtu", out);
   surf->add_option("input", input, "closed surface (.stl/.off/.obj/.vtp/.vtu/.vtk/.msh)")->required();
-  surf->add_option("--size", size, size_help)->required();
+  surf->add_option("--size", size, size_help)->required()->check(xfem::cli::positive());
 
   auto* rect = command(app, "cut-rect", "planar cut: the parallelogram corner, corner+edge1, corner+edge2; normal "
                                         "along edge1 x edge2",
@@ -109,7 +133,7 @@ int main(int argc, char** argv) {
                        "cut-disc --center 0 0 0 --normal 0 0 1 --radius 0.03 --rings 8 -o disc.vtp", out);
   disc->add_option("--center,--centre", center, "centre, m (default 0 0 0)");
   disc->add_option("--normal", normal, "normal, the cut's +1 side (default 0 0 1)");
-  disc->add_option("--radius", radius, "radius, m (default 0.03)");
+  disc->add_option("--radius", radius, "radius, m (default 0.03)")->check(xfem::cli::positive());
   disc->add_option("--rings", rings, "concentric rings of 6, 12, 18, ... points: 6 rings^2 triangles (default 8)");
 
   double zz_z0 = 0.1, zz_amplitude = 0.02;
@@ -133,6 +157,26 @@ int main(int argc, char** argv) {
   merge->add_option("inputs", merge_inputs, "cut surfaces (.vtp/.vtk/.stl/.obj/.off)")->required()->expected(2, -1);
 
   return xfem::cli::run(*tool, argc, argv, [&] {
+    const bool mesh_out = box->parsed() || ubox->parsed() || organ->parsed() || surf->parsed();
+    xfem::cli::check_output(out, {mesh_out ? ".vtu" : ".vtp"});
+    for (const auto& [a, name] : {std::pair<const V3*, const char*>{&lo, "--lo"}, {&hi, "--hi"}, {&corner, "--corner"},
+                                  {&edge1, "--edge1"}, {&edge2, "--edge2"}, {&center, "--center"}})
+      check_extent(*a, name);
+    check_extent({sine_lo[0], sine_lo[1], z0}, "cut-sine --lo/--z0");
+    check_extent({sine_hi[0], sine_hi[1], amplitude}, "cut-sine --hi/--amplitude");
+    if (box->parsed()) {
+      guard(6.0 * cells[0] * cells[1] * cells[2], "tets", allow_large);
+    } else if (ubox->parsed()) {
+      guard(tets_for((hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]), size), "tets", allow_large);
+    } else if (organ->parsed()) {
+      const double r = xfem::organ_bounding_radius;
+      guard(tets_for(4.0 / 3.0 * M_PI * r * r * r, size), "tets", allow_large);
+    } else if (rect->parsed() || sine->parsed()) {
+      const std::vector<int> d = sine->parsed() && sine->count("--divisions") == 0 ? std::vector<int>{80, 40} : divisions;
+      guard(2.0 * d[0] * (d.size() > 1 ? d[1] : d[0]), "triangles", allow_large);
+    } else if (disc->parsed()) {
+      guard(6.0 * rings * rings, "triangles", allow_large);
+    }
     if (box->parsed()) {
       const Eigen::Vector3i n(cells[0], cells[1], cells[2]);
       if (beam || *sz) write_mesh(xfem::box_mesh(n, vec(lo), vec(hi), beam ? xfem::BoxCut{0.1, 0.015} : xfem::BoxCut{split_z, split_x}), out);
@@ -145,6 +189,8 @@ int main(int argc, char** argv) {
       std::vector<std::string> warnings;
       const xfem::TriangleMesh s = xfem::read_triangle_mesh(input, &warnings);
       for (const auto& w : warnings) xfem::cli::warn(w);
+      const Eigen::RowVector3d extent = s.points.colwise().maxCoeff() - s.points.colwise().minCoeff();
+      guard(tets_for(extent.prod(), size), "tets", allow_large);
       write_mesh(xfem::surface_mesh(s, size, input), out);
     } else if (rect->parsed()) {
       write_cut(beam ? xfem::beam_cut(pair(divisions))

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // RMS error of a solution against a reference solution (DESIGN.md, "The benchmark", RMS (5.1)).
+#include <cmath>
 #include <cstdio>
 
 #include "xfem/cli.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
 #include "xfem/exact_error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/problem.h"
 #include "xfem/json_io.h"
 #include "xfem/matrix_market.h"
@@ -23,6 +25,7 @@ Field nodal_displacements(const xfem::TetMesh& mesh, const std::string& mesh_pat
   const Eigen::Index np = mesh.points.rows();
   Field u(np, 3);
   if (!solution.empty()) {
+    xfem::check_provenance(xfem::read_mtx_provenance(solution), solution, "enriched", xfem::fingerprint(mesh), mesh_path);
     const Eigen::VectorXd v = xfem::read_vector(solution);
     if (v.size() < 3 * np || v.size() % 3 != 0)
       throw xfem::Error(solution + ": " + std::to_string(v.size()) + " values, expected 3 per vector and at least " +
@@ -73,24 +76,44 @@ int main(int argc, char** argv) {
   ref_option->excludes(exact_option);
   app.add_option("--samples", samples, "with --exact: oversampling points per tet for the L2/H1 errors (m^3 > N, "
                                        "one at each sub-tet centroid; default 26: 27 points)")
-      ->check(CLI::Range(1, 100000));
+      ->check(xfem::cli::range(1, 1000));
   app.add_option("--reference-solution", reference_solution,
                  "reference solution u.mtx (default: the reference's point array 'displacement')");
   app.add_option("-o,--output", output, "JSON report");
   app.add_option("--max", max_rms, "exit 1 when the RMS error exceeds this (metres): a golden-file check");
   app.add_option("--radius", radius, "reference nodes outside the mesh but this close are evaluated at the nearest "
-                                     "tet (metres; default 1e-6 of the mesh's bounding-box diagonal)");
+                                     "tet (metres; default 1e-6 of the mesh's bounding-box diagonal)")
+      ->check(xfem::cli::non_negative());
+  app.get_option("--max")->check(xfem::cli::non_negative());
   app.callback([&] {  // during parsing, so that a missing one is a usage error (exit 2)
     if (reference.empty() && exact_path.empty()) throw CLI::RequiredError("--reference or --exact");
   });
+  // Checks a solution against the X-FEM mesh and cut it is evaluated on (its recorded fingerprints).
+  const auto check_solution = [&](const xfem::EnrichedMesh& em) {
+    xfem::check_cut_matches(em.mesh, mesh_path, em.cut->mesh(), cut_path);
+    const xfem::Provenance made_for = xfem::read_mtx_provenance(solution);
+    xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), mesh_path);
+    xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
+  };
+  const auto finite = [](double v, const char* what) {
+    if (!std::isfinite(v)) throw xfem::Error(std::string("the ") + what + " is not finite (overflow in the solution?)");
+  };
   return xfem::cli::run(*tool, argc, argv, [&] {
+    if (!output.empty()) xfem::cli::check_output(output, {".json"}, true);
     if (!exact_path.empty()) {
       const xfem::ExactField exact = xfem::read_exact_field(exact_path);
       if (cut_path.empty()) throw xfem::Error(mesh_path + ": --exact needs the X-FEM mesh's cut (--cut)");
       if (solution.empty()) throw xfem::Error(mesh_path + ": --exact needs the solution (--solution)");
       const xfem::EnrichedMesh em = xfem::read_enriched_mesh(mesh_path, cut_path);
+      check_solution(em);
       const Eigen::VectorXd u = xfem::read_vector(solution);
+      if (u.size() != 3 * em.n)
+        throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
+                          std::to_string(3 * em.n) + " for " + mesh_path);
       const xfem::ExactErrorReport e = xfem::exact_error(em, u, exact, samples);
+      finite(e.nodes.rms, "RMS error");
+      finite(e.l2, "L2 error");
+      finite(e.h1, "H1 error");
       const auto rel = [](double a, double b) { return b > 0 ? a / b : 0.0; };
       xfem::cli::info("RMS " + std::to_string(e.nodes.rms) + " m over " + std::to_string(e.nodes.compared) +
                       " nodes, relative L2 " + std::to_string(rel(e.l2, e.l2_exact)) + ", relative H1 " +
@@ -142,6 +165,7 @@ int main(int argc, char** argv) {
       if (cut_path.empty()) throw xfem::Error(mesh_path + ": an X-FEM mesh needs its cut (--cut)");
       if (solution.empty()) throw xfem::Error(mesh_path + ": an X-FEM mesh needs its solution (--solution)");
       enriched = xfem::read_enriched_mesh(mesh_path, cut_path);
+      check_solution(enriched);
       u = xfem::read_vector(solution);
       if (u.size() != 3 * enriched.n)
         throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
@@ -152,6 +176,8 @@ int main(int argc, char** argv) {
       field = xfem::plain_field(plain, plain_u, radius);
     }
     const xfem::RmsReport r = xfem::rms_error(ref, field);
+    finite(r.rms, "RMS error");
+    finite(r.max, "max error");
     if (r.compared == 0) throw xfem::Error(reference + ": no reference node lies in " + mesh_path);
     if (r.outside > 0)
       xfem::cli::warn(std::to_string(r.outside) + " reference nodes lie outside " + mesh_path +

@@ -17,6 +17,7 @@
 #include "xfem/cli.h"
 #include "xfem/dirichlet.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/linear_system.h"
 #include "xfem/petsc_binary.h"
 #include "xfem/petsc_solver.h"
@@ -138,9 +139,9 @@ int main(int argc, char** argv) {
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   app.add_option("--rtol", rtol, "PETSc: relative residual ||f - K u|| / ||f|| to reach (default 1e-10)")
-      ->check(CLI::PositiveNumber);
+      ->check(xfem::cli::positive());
   app.add_option("--max-iterations", max_iterations, "PETSc: CG iteration limit (default 10000)")
-      ->check(CLI::PositiveNumber);
+      ->check(xfem::cli::range(1, 1e9));
   app.add_option("--near-null-space", near_null, "PETSc: GAMG near-null space: rigid (rigid-body modes of the original "
                                                  "DOFs, needs the coordinates in the system; default), rigid-enriched (also the "
                                                  "translations on enriched DOFs) or none (docs/PERFORMANCE.md)")
@@ -156,8 +157,10 @@ int main(int argc, char** argv) {
                  "DOFs: sign/branch DOFs with a tiny but non-zero support on one side of the cut (TOL ~ the volume "
                  "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
                  "of K is exactly zero are always fixed to 0, with a warning")
-      ->check(CLI::NonNegativeNumber);
+      ->check(xfem::cli::non_negative());
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".mtx"}, true);
+    if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
     const bool mpi_child = under_mpirun();
     if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
       // The choice from the system without K (cheap), the same in every rank of a restart.
@@ -323,7 +326,12 @@ int main(int argc, char** argv) {
       for (const auto& r : reactions.conditions) info(xfem::describe_reaction(r, reactions.moments));
       report["reactions"] = xfem::reactions_json(reactions.conditions, reactions.applied, reactions.moments);
       if (!reactions_path.empty()) xfem::write_vector(reactions.r, reactions_path);
-      xfem::write_vector(u, output);
+      // The fingerprints of the system's inputs (recorded by xfem-assemble) travel with u.
+      xfem::Provenance provenance;
+      const std::string provenance_path = (std::filesystem::path(dir) / "provenance.json").string();
+      if (std::filesystem::exists(provenance_path))
+        provenance = xfem::provenance_from_json(xfem::read_json(provenance_path), provenance_path);
+      xfem::write_vector(u, output, xfem::provenance_comments(provenance));
       if (!report_path.empty()) xfem::write_json(report, report_path);
     }
   });

@@ -8,6 +8,7 @@
 #include "xfem/element_split.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
+#include "xfem/fingerprint.h"
 #include "xfem/matrix_market.h"
 #include "xfem/paraview_script.h"
 #include "xfem/problem.h"
@@ -43,20 +44,23 @@ int main(int argc, char** argv) {
   app.add_option("--paraview", script, "also write a ParaView Python script (.py) that opens the output warped by "
                                        "--scale and coloured like the picture (paraview --script=FILE)");
   app.add_option("--scale", scale, "displacement magnification in the picture and script only, dimensionless "
-                                   "(files keep the true displacement)")->check(CLI::PositiveNumber);
-  app.add_option("--width", width, "picture width, pixels")->check(CLI::Range(64, 8192));
-  app.add_option("--height", height, "picture height, pixels")->check(CLI::Range(64, 8192));
+                                   "(files keep the true displacement)")->check(xfem::cli::range(1e-6, 1e6));
+  app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
+  app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--edges", edges, "element edges in the picture: auto (light grey below 20,000 visible faces, "
                                    "default), on or off")->check(CLI::IsMember({"auto", "on", "off"}));
   double wound_offset = 1e-4;
   app.add_option("--wound-offset", wound_offset, "move the wound (--faces) this fraction of the body's diagonal out of "
                                                  "its pieces so that it does not z-fight with the cut faces of the "
                                                  "output (dimensionless, default 1e-4; 0 keeps the cut's exact geometry)")
-      ->check(CLI::Range(0.0, 0.1));
+      ->check(xfem::cli::range(0.0, 0.1));
   bool no_edges = false;
   app.add_flag("--no-edges", no_edges, "same as --edges off");
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
   return xfem::cli::run(*tool, argc, argv, [&] {
+    xfem::cli::check_output(output, {".vtu"});
+    if (!faces.empty()) xfem::cli::check_output(faces, {".vtp"});
+    if (!png.empty()) xfem::cli::check_output(png, {".png"});
     if (!png.empty() && !std::getenv("DISPLAY"))
       throw xfem::Error(png + ": rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
     const xfem::Problem problem = xfem::read_problem(problem_path);
@@ -66,6 +70,7 @@ int main(int argc, char** argv) {
     if (cut_path.empty() && em.n > em.np)
       throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+    if (em.cut) xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     const Eigen::VectorXd u = xfem::read_vector(solution);
     if (u.size() != 3 * em.n)
       throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
@@ -77,6 +82,10 @@ int main(int argc, char** argv) {
         throw xfem::Error(reactions_path + ": " + std::to_string(reactions.size()) + " values, expected 3N = " +
                           std::to_string(3 * em.n) + " for " + input);
     }
+    const xfem::Provenance made_for = xfem::read_mtx_provenance(solution);
+    xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), input);
+    if (em.cut) xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
+    xfem::check_provenance(made_for, solution, "problem", xfem::fingerprint_json_file(problem_path), problem_path);
 
     const xfem::SplitMesh split =
         cut_path.empty() ? xfem::unsplit_mesh(em.mesh, em.side)

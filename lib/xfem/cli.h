@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace xfem::cli {
 
@@ -21,14 +22,17 @@ struct Tool {
 std::unique_ptr<Tool> make_tool(const std::string& name, const std::string& description,
                                 const std::string& example);
 
-/// Parses the command line and runs `body`. Returns the process exit code: 0 on success,
+/// Parses the command line and runs `body`. Before parsing, any option value that reads as a
+/// non-finite number ("nan", "inf", "1e999") is a usage error, so no numeric option ever sees NaN
+/// or Inf; required options show no default in --help; an unknown subcommand or option gets a
+/// "did you mean" suggestion. Returns the process exit code: 0 on success,
 /// 1 when `body` throws (bad input, failed computation: one line "<tool>: error: <what>" on
 /// stderr), 2 on a usage error (with a hint to try --help). --help and --version print to stdout
 /// and return 0.
 int run(Tool& tool, int argc, char** argv, const std::function<void()>& body);
 
-/// Logging on stderr, prefixed with the tool's name. `info` is silenced by -q; `detail` needs -v;
-/// `warn` always shows.
+/// Logging on stderr, prefixed with the tool's name. `info` and `warn` are silenced by -q (which
+/// shows errors only); `detail` needs -v.
 void info(const std::string& message);
 void detail(const std::string& message);
 void warn(const std::string& message);
@@ -36,6 +40,21 @@ void warn(const std::string& message);
 /// A progress callback for long lib/ routines: prints "<tool>: <what> 10% ... 100%" on stderr in
 /// steps of 10% (nothing under -q). Call with fraction in [0, 1].
 std::function<void(double)> progress(const std::string& what);
+
+/// Option checks with short numbers in their messages ("1e+300", never 309 digits); NaN fails
+/// every one of them. `range` is inclusive.
+CLI::Validator range(double lo, double hi);
+CLI::Validator positive();
+CLI::Validator non_negative();
+
+/// Checks an output path before any work: its directory exists and is writable, and its
+/// extension is one of `extensions` (lower case with the dot; empty = any). "-" (stdout) passes
+/// when `stdout_ok`. Throws xfem::Error "<path>: ..." naming the problem.
+void check_output(const std::string& path, const std::vector<std::string>& extensions, bool stdout_ok = false);
+
+/// The suggestion for a mistyped `word` among `candidates` (closest by edit distance, at most
+/// about a third of its letters off), or "" when none is close.
+std::string closest(const std::string& word, const std::vector<std::string>& candidates);
 
 /// Wall-clock seconds since `start` (from `now()`), for the timings tools report.
 double now();

@@ -63,7 +63,9 @@ TriangleMesh cut_sine(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, doub
   check_divisions(divisions, "sinusoidal cut");
   if (!((hi.array() > lo.array()).all()))
     throw Error("sinusoidal cut: empty rectangle (hi must exceed lo in x and y)");
-  if (!(wavelength > 0)) throw Error("sinusoidal cut: wavelength must be positive (got " + std::to_string(wavelength) + ")");
+  if (!(wavelength > 0)) throw Error("sinusoidal cut: wavelength must be positive (got " + short_number(wavelength) + ")");
+  if (!std::isfinite(wavelength) || !std::isfinite(z0) || !std::isfinite(amplitude) || !lo.allFinite() || !hi.allFinite())
+    throw Error("sinusoidal cut: z0, amplitude, wavelength and the rectangle must be finite");
   const int n0 = divisions(0), n1 = divisions(1);
   TriangleMesh m;
   m.points.resize(static_cast<Eigen::Index>(n0 + 1) * (n1 + 1), 3);
@@ -80,7 +82,7 @@ TriangleMesh cut_sine(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, doub
 
 TriangleMesh cut_disc(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, double radius, int rings) {
   if (rings < 1) throw Error("disc cut: rings must be at least 1 (got " + std::to_string(rings) + ")");
-  if (!(radius > 0)) throw Error("disc cut: radius must be positive (got " + std::to_string(radius) + ")");
+  if (!(radius > 0)) throw Error("disc cut: radius must be positive (got " + short_number(radius) + ")");
   if (!(normal.norm() > 0)) throw Error("disc cut: the normal is zero");
   // In-plane frame (u, v, n) right-handed, u from the axis least aligned with n (deterministic).
   const Eigen::Vector3d n = normal.normalized();

@@ -101,7 +101,7 @@ namespace fs = std::filesystem;
 // Every name a system directory may hold: an existing directory with anything else in it is not
 // replaced (it is someone's data, not an older system).
 bool is_system_file(const std::string& name) {
-  for (const char* known : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "K.petsc", "f.petsc", "dirichlet_conditions.json",
+  for (const char* known : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "K.petsc", "f.petsc", "dirichlet_conditions.json", "provenance.json",
                             "coordinates.petsc", "system.json"})
     if (name == known) return true;
   return false;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -120,6 +121,24 @@ Header parse_header(Scanner& s) {
     }
   }
   return h;
+}
+
+// Rejects a size line that promises more entries than the file can hold (each entry takes at
+// least `min_bytes` characters), before anything is allocated: a corrupt header claiming 1e12
+// rows must be an error naming the file, not "out of memory".
+void check_claim(const Scanner& s, long count, long min_bytes, const char* what) {
+  const long left = static_cast<long>(s.end - s.p);
+  if (count > left / min_bytes + 1)
+    throw Error(s.path + ": the size line claims " + std::to_string(count) + " " + what + " but only " +
+                std::to_string(left) + " bytes follow (truncated file or corrupt header)");
+}
+
+// Nothing but white space may follow the last entry: extra values mean a wrong header.
+void expect_end(Scanner& s, long count) {
+  s.skip_space();
+  if (s.p != s.end)
+    throw Error(s.path + ": line " + std::to_string(s.line) + ": more values than the " + std::to_string(count) +
+                " entries the size line announces");
 }
 
 }  // namespace
@@ -242,6 +261,10 @@ SparseMatrix read_matrix(const std::string& path) {
   const long rows = s.number<long>("the row count"), cols = s.number<long>("the column count"),
              nnz = s.number<long>("the entry count");
   if (rows < 0 || cols < 0 || nnz < 0) throw Error(path + ": negative size in the size line");
+  if (rows > std::numeric_limits<int>::max() || cols > std::numeric_limits<int>::max())
+    throw Error(path + ": " + std::to_string(rows) + " x " + std::to_string(cols) + " is larger than supported (2^31 - 1)");
+  if (h.symmetric && rows != cols) throw Error(path + ": a symmetric matrix must be square");
+  check_claim(s, nnz, 6, "entries");
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(static_cast<std::size_t>(h.symmetric ? 2 * nnz : nnz));
   for (long k = 0; k < nnz; ++k) {
@@ -249,16 +272,24 @@ SparseMatrix read_matrix(const std::string& path) {
     const double v = s.real();
     if (i < 0 || i >= rows || j < 0 || j >= cols)
       throw Error(path + ": line " + std::to_string(s.line) + ": index out of range");
+    if (h.symmetric && i < j)
+      throw Error(path + ": line " + std::to_string(s.line) + ": entry (" + std::to_string(i + 1) + ", " +
+                  std::to_string(j + 1) + ") above the diagonal in a symmetric file (only the lower triangle is stored)");
     entries.emplace_back(static_cast<int>(i), static_cast<int>(j), v);
     if (h.symmetric && i != j) entries.emplace_back(static_cast<int>(j), static_cast<int>(i), v);
   }
+  expect_end(s, nnz);
   SparseMatrix K(static_cast<int>(rows), static_cast<int>(cols));
-  K.setFromTriplets(entries.begin(), entries.end());
+  // A duplicated entry would be summed silently: refuse it.
+  K.setFromTriplets(entries.begin(), entries.end(), [&](double, double) -> double {
+    throw Error(path + ": an entry appears twice (duplicated (row, column) pair)");
+  });
   return K;
 }
 
-void write_vector(const Eigen::VectorXd& v, const std::string& path) {
+void write_vector(const Eigen::VectorXd& v, const std::string& path, const std::vector<std::string>& comments) {
   std::string text = "%%MatrixMarket matrix array real general\n";
+  for (const std::string& c : comments) text += c + "\n";
   text.reserve(static_cast<std::size_t>(v.size()) * 25 + 64);
   append(text, static_cast<long>(v.size()));
   text += " 1\n";
@@ -277,19 +308,12 @@ Eigen::VectorXd read_vector(const std::string& path) {
   const long rows = s.number<long>("the row count"), cols = s.number<long>("the column count");
   if (cols != 1) throw Error(path + ": expected an n x 1 vector, got " + std::to_string(cols) + " columns");
   if (rows < 0) throw Error(path + ": negative size in the size line");
+  if (h.coordinate)
+    throw Error(path + ": a sparse (coordinate) Matrix Market file, expected a dense (array) vector of all values");
+  check_claim(s, rows, 2, "values");
   Eigen::VectorXd v = Eigen::VectorXd::Zero(rows);
-  if (h.coordinate) {
-    const long nnz = s.number<long>("the entry count");
-    for (long k = 0; k < nnz; ++k) {
-      const long i = s.number<long>("a row index") - 1;
-      s.number<long>("a column index");
-      const double x = s.real();
-      if (i < 0 || i >= rows) throw Error(path + ": line " + std::to_string(s.line) + ": index out of range");
-      v[i] = x;
-    }
-  } else {
-    for (long i = 0; i < rows; ++i) v[i] = s.real();
-  }
+  for (long i = 0; i < rows; ++i) v[i] = s.real();
+  expect_end(s, rows);
   return v;
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
+#include <vector>
 
 namespace xfem {
 
@@ -14,13 +15,18 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 void write_symmetric_matrix(const SparseMatrix& K, const std::string& path);
 
 /// Reads a Matrix Market `coordinate real` matrix, `general` or `symmetric`. A symmetric file is
-/// returned as its full matrix (both triangles). Throws xfem::Error naming the file and line.
+/// returned as its full matrix (both triangles). Throws xfem::Error naming the file and line; also
+/// for a size line claiming more entries than the file holds (before allocating), extra values,
+/// a duplicated entry, an entry above the diagonal of a symmetric file.
 SparseMatrix read_matrix(const std::string& path);
 
 /// Writes `v` as a Matrix Market `array real general` n x 1 vector. Atomic; "-" is stdout.
-void write_vector(const Eigen::VectorXd& v, const std::string& path);
+/// `comments` (each starting with '%') go after the banner. Refuses non-finite values.
+void write_vector(const Eigen::VectorXd& v, const std::string& path, const std::vector<std::string>& comments = {});
 
-/// Reads an n x 1 Matrix Market vector, `array` or `coordinate` form.
+/// Reads an n x 1 Matrix Market vector in `array` form. Throws xfem::Error naming the file for a
+/// `coordinate` file, a size line claiming more values than the file holds, missing or extra
+/// values, non-finite values.
 Eigen::VectorXd read_vector(const std::string& path);
 
 }  // namespace xfem

@@ -104,8 +104,8 @@ double optional_number(const Node& n, const char* key, double fallback) {
 }
 
 void check_material(const Node& n, double E, double nu) {
-  if (!(E > 0)) n.fail("E must be positive, got " + std::to_string(E));
-  if (!(nu > -1.0 && nu < 0.5)) n.fail("nu must lie in (-1, 0.5), got " + std::to_string(nu));
+  if (!(E > 0)) n.fail("E must be positive, got " + short_number(E));
+  if (!(nu > -1.0 && nu < 0.5)) n.fail("nu must lie in (-1, 0.5), got " + short_number(nu));
 }
 
 RigidMotion parse_rigid_motion(const Node& n) {

@@ -40,7 +40,7 @@ auto exude_without_time_limit() { return params::exude(params::time_limit = 0); 
 
 void check_size(double size) {
   if (!(std::isfinite(size) && size > 0))
-    throw Error("mesh size must be positive and finite (got " + std::to_string(size) + ")");
+    throw Error("mesh size must be positive and finite (got " + short_number(size) + ")");
 }
 
 // Tets of the complex (cells in the domain) and the vertices they use, validated (positive
@@ -124,6 +124,8 @@ TetMesh mesh_polyhedral(const Surface& surface, double size, const std::string& 
 TetMesh unstructured_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double size) {
   check_size(size);
   if (!((hi.array() > lo.array()).all())) throw Error("unstructured box: empty box (hi must exceed lo in x, y and z)");
+  if (!lo.allFinite() || !hi.allFinite() || !std::isfinite((hi - lo).prod()))
+    throw Error("unstructured box: corners too large (the volume overflows)");
   // The box as 12 outward triangles; corner c has coordinates lo or hi by the bits of c.
   Surface s;
   Surface::Vertex_index v[8];

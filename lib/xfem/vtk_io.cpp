@@ -32,6 +32,8 @@
 #include <array>
 #include <cctype>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -40,6 +42,8 @@
 #include <type_traits>
 #include <map>
 #include <mutex>
+#include <new>
+#include <stdexcept>
 #include <queue>
 
 #include "xfem/atomic_file.h"
@@ -137,7 +141,14 @@ class VtkMessages {
 template <class Algorithm>
 void update_or_throw(Algorithm* algorithm, const VtkMessages& messages, const std::string& path,
                      const char* what) {
-  algorithm->Update();
+  try {
+    algorithm->Update();
+  } catch (const std::bad_alloc&) {
+    // A corrupt size (e.g. a compressed block header of a .vtu) makes VTK allocate for it.
+    throw Error(path + ": cannot read " + what + ": a size in the file is too large to allocate (corrupt file?)");
+  } catch (const std::length_error&) {
+    throw Error(path + ": cannot read " + what + ": a size in the file is too large to allocate (corrupt file?)");
+  }
   messages.throw_if_error(path + ": cannot read " + what);
 }
 
@@ -216,6 +227,12 @@ void add_arrays(vtkFieldData* out, const DataArrays& arrays, std::size_t tuples,
     if (tuples != std::string::npos && array.tuples() != tuples)
       throw Error(context + " array '" + name + "': " + std::to_string(array.tuples()) + " tuples for " +
                   std::to_string(tuples) + " items");
+    // A NaN or Inf in an output is never a result: refuse it, naming the quantity.
+    for (std::size_t i = 0; i < array.values.size(); ++i)
+      if (!std::isfinite(array.values[i]))
+        throw Error(path + ": refusing to write a non-finite value (" + short_number(array.values[i]) + ") in " +
+                    where + " array '" + name + "' at tuple " + std::to_string(i / array.components) +
+                    " (overflow: are the inputs' magnitudes sane?)");
     out->AddArray(to_vtk(name, array, context));
   }
 }
@@ -230,7 +247,10 @@ Points to_points(vtkPoints* in) {
   return out;
 }
 
-Ptr<vtkPoints> to_vtk(const Points& in) {
+Ptr<vtkPoints> to_vtk(const Points& in, const std::string& name) {
+  for (Eigen::Index i = 0; i < in.rows(); ++i)
+    if (!in.row(i).allFinite())
+      throw Error(name + ": refusing to write point " + std::to_string(i) + ": a coordinate is not finite");
   auto out = Ptr<vtkPoints>::New();
   out->SetDataTypeToDouble();
   out->SetNumberOfPoints(in.rows());
@@ -272,6 +292,140 @@ void copy_cell(int type, vtkIdType npts, const vtkIdType* ids, vtkIdType i, int 
   }
 }
 
+// VTK 9.1's legacy reader fills a POINTS section that ends early with invented points, reads a
+// huge count as an allocation, and crashes (null stream) on a cell section shorter than its
+// header says. So each section header is checked against what the file holds before VTK sees it:
+// POINTS n (3n numbers), CELLS / POLYGONS / LINES / VERTICES / TRIANGLE_STRIPS n size (size
+// numbers, size >= 2n... at least one id per cell), CELL_TYPES n (n numbers).
+void check_legacy_sections(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t binary_at = text.find("\nBINARY");
+  const char* end = text.data() + text.size();
+  std::size_t line_start = 0;
+  while (line_start < text.size()) {
+    std::size_t line_end = text.find('\n', line_start);
+    if (line_end == std::string::npos) line_end = text.size();
+    if (!std::isupper(static_cast<unsigned char>(text[line_start]))) {  // fast path: data lines
+      line_start = line_end + 1;
+      continue;
+    }
+    std::istringstream header(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200)));
+    std::string keyword;
+    header >> keyword;
+    const bool points = keyword == "POINTS", types = keyword == "CELL_TYPES";
+    const bool cells = keyword == "CELLS" || keyword == "POLYGONS" || keyword == "LINES" || keyword == "VERTICES" ||
+                       keyword == "TRIANGLE_STRIPS";
+    if (points || types || cells) {
+      long long n = -1, size = -1;
+      std::string type;
+      header >> n;
+      if (cells) header >> size;
+      if (points) header >> type;
+      if (!header || n < 0 || (cells && size < 0))
+        throw Error(path + ": malformed " + keyword + " line in the legacy VTK file");
+      if (n > static_cast<long long>(text.size()) || size > static_cast<long long>(text.size()))
+        throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items, more than the file can hold");
+      const std::size_t data = std::min(line_end + 1, text.size());
+      const bool new_cells = cells && text.compare(data, 7, "OFFSETS") == 0 &&  // VTK 5.1 layout
+                             text.compare(0, 24, "# vtk DataFile Version 5") == 0;
+      if (cells && !new_cells && size < 2 * n)
+        throw Error(path + ": " + keyword + " " + std::to_string(n) + " " + std::to_string(size) +
+                    ": too few values for that many cells");
+      const long long want = points ? 3 * n : cells ? size : n;
+      const long long left = static_cast<long long>(text.size() - data);
+      if (binary_at != std::string::npos && binary_at < line_start) {
+        const long long bytes = points ? (type == "double" ? 8 : 4) : 4;
+        if (!new_cells && want > left / bytes)
+          throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items but the file holds fewer");
+      } else if (!new_cells) {
+        long long numbers = 0;  // ASCII: count the numbers up to the next keyword
+        long long next_cell = 0, cells_seen = 0;  // cell sections: each cell is "k id_1 .. id_k"
+        const char* p = text.data() + data;
+        while (p < end && numbers < want) {
+          while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+          if (p == end || std::isalpha(static_cast<unsigned char>(*p))) break;
+          const char* token = p;
+          while (p < end && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+          const std::string word(token, std::min<std::size_t>(p - token, 40));
+          char* stop = nullptr;
+          std::strtod(word.c_str(), &stop);
+          if (stop != word.c_str() + word.size()) {
+            std::string shown(token, std::min<std::size_t>(p - token, 20));
+            for (char& c : shown)  // one printable line
+              if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+            throw Error(path + ": " + keyword + " section: '" + shown + "' is not a number");
+          }
+          if (cells && numbers == next_cell) {  // a cell's point count
+            const double k = std::strtod(word.c_str(), nullptr);
+            if (!(k >= 1 && k <= 1000) || ++cells_seen > n)
+              throw Error(path + ": " + keyword + " section: cell " + std::to_string(cells_seen) +
+                          " has an impossible point count or there are more cells than " + std::to_string(n));
+            next_cell = numbers + 1 + static_cast<long long>(k);
+          }
+          ++numbers;
+        }
+        if (cells && numbers == want && (next_cell != want || cells_seen != n))
+          throw Error(path + ": " + keyword + " " + std::to_string(n) + " " + std::to_string(size) +
+                      ": the cells' point counts do not add up to the section's size");
+        if (numbers < want)
+          throw Error(path + ": " + keyword + " claims " + std::to_string(n) +
+                      (points ? " points but only " : " items but only ") + std::to_string(numbers) +
+                      (points ? " coordinates" : " values") + " follow (" + std::to_string(want) + " expected)");
+      }
+    }
+    line_start = line_end + 1;
+  }
+}
+
+// VTK 9.1's XML reader divides by a zero block size (SIGFPE) and allocates whatever a corrupt
+// compressed-block header or a NumberOfPoints attribute claims. For appended raw data (what the
+// writers here produce) each array's header is checked against the file's size first.
+void check_xml_sizes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t appended = std::min(text.find("<AppendedData"), text.size());
+  const unsigned long long size = text.size();
+  const auto corrupt = [&](const std::string& what) { return Error(path + ": " + what + " (corrupt file?)"); };
+  // Counts: zlib expands at most ~1032:1, so no honest file holds more items than that.
+  for (const char* key : {"NumberOfPoints=\"", "NumberOfCells=\"", "NumberOfPolys=\"", "NumberOfTuples=\""})
+    for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
+      const unsigned long long n = std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
+      if (n > 1100 * size)
+        throw corrupt(std::string(key, std::strlen(key) - 2) + " = " + std::to_string(n) + " is more than " +
+                      std::to_string(size) + " bytes can hold");
+    }
+  if (appended == text.size() || text.find("byte_order=\"BigEndian\"") < appended) return;
+  const std::size_t underscore = text.find('_', text.find('>', appended));
+  if (underscore == std::string::npos) return;
+  const unsigned long long data = underscore + 1;
+  const bool wide = text.find("header_type=\"UInt64\"") < appended;
+  const bool compressed = text.find("compressor=") < appended;
+  const unsigned long long h = wide ? 8 : 4;
+  const auto word = [&](unsigned long long at) {
+    unsigned long long v = 0;
+    for (unsigned long long b = 0; b < h; ++b) v |= static_cast<unsigned long long>(static_cast<unsigned char>(text[at + b])) << (8 * b);
+    return v;
+  };
+  const char* key = "offset=\"";
+  for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
+    const unsigned long long pos = data + std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
+    if (pos > size || size - pos < (compressed ? 3 : 1) * h) throw corrupt("an array's data lies beyond the end of the file");
+    if (!compressed) {
+      if (word(pos) > size - pos - h) throw corrupt("an array claims more bytes than the file holds");
+      continue;
+    }
+    const unsigned long long blocks = word(pos), block = word(pos + h), last = word(pos + 2 * h);
+    if (blocks > (size - pos) / h - 3) throw corrupt("a compressed array claims more blocks than the file holds");
+    if ((blocks > 0 && block == 0) || block > (1ULL << 31) || last > block)  // VTK allocates `block` even for 0 blocks
+      throw corrupt("a compressed array has an impossible block size");
+    unsigned long long total = 0;
+    for (unsigned long long b = 0; b < blocks; ++b) total += word(pos + (3 + b) * h);
+    if (total > size - pos - (3 + blocks) * h) throw corrupt("a compressed array claims more bytes than the file holds");
+    if (blocks * block > 1100 * size) throw corrupt("a compressed array expands to more than its file can hold");
+  }
+}
+
 template <class Reader>
 void configure_legacy(Reader* reader) {
   reader->ReadAllScalarsOn();
@@ -298,11 +452,13 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
     auto reader = Ptr<vtkXMLUnstructuredGridReader>::New();
     if (!reader->CanReadFile(path.c_str()))
       throw Error(path + ": not a VTK XML unstructured grid (.vtu) file");
+    check_xml_sizes(path);
     reader->SetFileName(path.c_str());
     update_or_throw(reader.Get(), messages, path, what);
     return reader->GetOutput();
   }
   if (ext == ".vtk") {
+    check_legacy_sections(path);
     auto reader = Ptr<vtkDataSetReader>::New();
     reader->SetFileName(path.c_str());
     configure_legacy(reader.Get());
@@ -473,7 +629,7 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
   const std::string name = path == "-" ? std::string("<stdout>") : path;
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
-  grid->SetPoints(to_vtk(mesh.points));
+  grid->SetPoints(to_vtk(mesh.points, name));
   auto offsets = Ptr<vtkIdTypeArray>::New();
   auto connectivity = Ptr<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(mesh.tets.rows() + 1);
@@ -500,6 +656,28 @@ TriangleMesh read_off(const std::string& path, bool obj = false) {
   std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::ifstream in(path);
+  {  // The counts in the header, checked against the file's size before CGAL allocates for them.
+    std::vector<std::string> words;  // the first words, comments left out
+    std::string line, word;
+    while (words.size() < 3 && std::getline(in, line)) {
+      std::istringstream split(line.substr(0, line.find('#')));
+      while (words.size() < 3 && split >> word) words.push_back(word);
+    }
+    if (!words.empty() && words[0].find("OFF") != std::string::npos) words.erase(words.begin());
+    long long nv = -1, nf = -1;
+    if (words.size() >= 2) {
+      std::istringstream(words[0]) >> nv;
+      std::istringstream(words[1]) >> nf;
+    }
+    in.clear();
+    in.seekg(0, std::ios::end);
+    const long long size = static_cast<long long>(in.tellg());
+    if (nv < 0 || nf < 0) throw Error(path + ": not a readable OFF file (no vertex and face counts)");
+    if (nv > size / 6 + 1 || nf > size / 8 + 1)
+      throw Error(path + ": the OFF header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                  " faces, more than the " + std::to_string(size) + " bytes of the file can hold");
+    in.seekg(0);
+  }
   // verbose(false): CGAL would otherwise explain its failure on std::cerr.
   if (!(obj ? CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false))
             : CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false))))
@@ -707,11 +885,13 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
         reader->SetInputString(read_stdin());
       } else {
         if (!reader->CanReadFile(path.c_str())) throw Error(path + ": not a VTK XML polydata (.vtp) file");
+        check_xml_sizes(path);
         reader->SetFileName(path.c_str());
       }
       update_or_throw(reader.Get(), messages, name, what);
       mesh = from_polydata(reader->GetOutput(), name);
     } else if (ext == ".vtk") {
+      check_legacy_sections(path);
       auto reader = Ptr<vtkDataSetReader>::New();
       reader->SetFileName(path.c_str());
       configure_legacy(reader.Get());
@@ -751,7 +931,7 @@ void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
   const std::string name = path == "-" ? std::string("<stdout>") : path;
   VtkMessages messages;
   auto poly = Ptr<vtkPolyData>::New();
-  poly->SetPoints(to_vtk(mesh.points));
+  poly->SetPoints(to_vtk(mesh.points, name));
   auto offsets = Ptr<vtkIdTypeArray>::New();
   auto connectivity = Ptr<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(mesh.triangles.rows() + 1);

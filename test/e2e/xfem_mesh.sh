@@ -36,10 +36,10 @@ check 2 "--beam-cut with --split-z" "$M" box --cells 2 4 14 --hi 0.03 0.06 0.2 -
 expect_error "zero cells" bad.vtu "$M" box --cells 0 4 14 --hi 0.03 0.06 0.2 -o bad.vtu
 expect_error "cut off the grid" bad.vtu "$M" box --cells 2 4 13 --hi 0.03 0.06 0.2 --beam-cut -o bad.vtu
 grep -q "not an interior grid plane" err.txt || { echo "FAIL: off-grid cut message"; cat err.txt; fail=1; }
-expect_error "negative size" bad.vtu "$M" unstructured-box --hi 0.03 0.06 0.2 --size -0.006 -o bad.vtu
-expect_error "zero size" bad.vtu "$M" organ --size 0 -o bad.vtu
+check 2 "negative size" "$M" unstructured-box --hi 0.03 0.06 0.2 --size -0.006 -o bad.vtu
+check 2 "zero size" "$M" organ --size 0 -o bad.vtu
 expect_error "missing surface" bad.vtu "$M" surface nothing.stl --size 0.01 -o bad.vtu
-expect_error "negative radius" bad.vtp "$M" cut-disc --radius -1 -o bad.vtp
+check 2 "negative radius" "$M" cut-disc --radius -1 -o bad.vtp
 
 # An open surface is refused.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > open.off

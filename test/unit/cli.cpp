@@ -2,6 +2,8 @@
 #include "xfem/cli.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <limits>
 #include <iostream>
 #include <new>
 #include <sstream>
@@ -123,7 +125,7 @@ TEST_CASE("cli: a successful body exits 0 and sees the parsed options", "[cli]")
   CHECK(r.err == "xfem-test: working\n");
 }
 
-TEST_CASE("cli: -q silences info and progress but not warnings; -v enables detail", "[cli]") {
+TEST_CASE("cli: -q silences info, progress and warnings (errors only); -v enables detail", "[cli]") {
   auto body = [] {
     xfem::cli::info("an info");
     xfem::cli::detail("a detail");
@@ -134,7 +136,7 @@ TEST_CASE("cli: -q silences info and progress but not warnings; -v enables detai
   CHECK(normal.err == "xfem-test: an info\nxfem-test: warning: a warning\nxfem-test: meshing 100%\n");
   const Result quiet = run_tool({"-q", "--cut", "c.vtp"}, body);
   CHECK(quiet.code == 0);
-  CHECK(quiet.err == "xfem-test: warning: a warning\n");
+  CHECK(quiet.err.empty());
   const Result verbose = run_tool({"-v", "--cut", "c.vtp"}, body);
   CHECK(verbose.code == 0);
   CHECK_THAT(verbose.err, Catch::StartsWith("xfem-test: options:\n") && Catch::Contains("cut=\"c.vtp\"\n") &&
@@ -173,4 +175,58 @@ TEST_CASE("cli: logging outside run() has no tool prefix", "[cli]") {
   xfem::cli::info("plain");
   xfem::cli::warn("careful");
   CHECK(captured.err.str() == "plain\nwarning: careful\n");
+}
+
+TEST_CASE("cli: a non-finite number given to any option is a usage error", "[cli]") {
+  for (const char* value : {"nan", "NaN", "inf", "-inf", "1e999", "-1e400"}) {
+    const Result r = run_tool({"--cut", "c.vtp", "-o", value});
+    CHECK(r.code == 2);
+    CHECK_FALSE(r.ran);
+    CHECK(r.err == std::string("xfem-test: usage error: -o ") + value + ": not a finite number (try xfem-test --help)\n");
+  }
+  const Result eq = run_tool({"--cut=nan"});
+  CHECK(eq.code == 2);
+  CHECK_THAT(eq.err, Catch::Contains("--cut nan: not a finite number"));
+  CHECK(run_tool({"--cut", "c.vtp", "-o", "-5"}).code == 0);  // finite negative numbers are values
+}
+
+TEST_CASE("cli: a mistyped option or subcommand gets a suggestion", "[cli]") {
+  const Result r = run_tool({"--cutt", "c.vtp"});
+  CHECK(r.code == 2);
+  CHECK(r.err == "xfem-test: usage error: unknown option --cutt (did you mean --cut?) (try xfem-test --help)\n");
+  CHECK(xfem::cli::closest("boxx", {"box", "organ", "cut-disc"}) == "box");
+  CHECK(xfem::cli::closest("unstructured-bx", {"box", "unstructured-box"}) == "unstructured-box");
+  CHECK(xfem::cli::closest("zzzzzz", {"box", "organ"}).empty());
+}
+
+TEST_CASE("cli: required options show no default in --help", "[cli]") {
+  const Result r = run_tool({"--help"});
+  CHECK_THAT(r.out, Catch::Contains("REQUIRED"));
+  CHECK_THAT(r.out, !Catch::Contains("=\"\" REQUIRED") && !Catch::Contains("=[] REQUIRED"));
+}
+
+TEST_CASE("cli: range checks print numbers in short form and reject NaN", "[cli]") {
+  const CLI::Validator v = xfem::cli::range(1, std::numeric_limits<double>::max());
+  std::string text = "0.5";
+  CHECK(v(text) == "value 0.5 is not in [1, 1.79769e+308]");
+  text = "nan";
+  CHECK_FALSE(v(text).empty());
+  text = "2";
+  CHECK(v(text).empty());
+  std::string neg = "-5";
+  CHECK(xfem::cli::non_negative()(neg) == "value -5 is not a non-negative number");
+  std::string zero = "0";
+  CHECK_FALSE(xfem::cli::positive()(zero).empty());
+}
+
+TEST_CASE("cli: outputs are checked before any work", "[cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "xfem_unit_cli";
+  std::filesystem::create_directories(dir);
+  CHECK_NOTHROW(xfem::cli::check_output((dir / "a.vtu").string(), {".vtu"}));
+  CHECK_THROWS_WITH(xfem::cli::check_output((dir / "missing" / "a.vtu").string(), {".vtu"}),
+                    Catch::EndsWith("does not exist"));
+  CHECK_THROWS_WITH(xfem::cli::check_output((dir / "a.txt").string(), {".vtu", ".vtp"}),
+                    Catch::EndsWith("a.txt: unknown extension '.txt' (expected .vtu, .vtp)"));
+  CHECK_THROWS_WITH(xfem::cli::check_output("-", {".vtu"}), Catch::Contains("cannot go to stdout"));
+  CHECK_NOTHROW(xfem::cli::check_output("-", {".json"}, true));
 }

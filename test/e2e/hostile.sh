@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# Hostile input (issue "Never a silent wrong answer"): each case the bad-input campaign found is
+# refused with one line "<tool>: error: ..." (exit 1) or "<tool>: usage error: ..." (exit 2)
+# naming what is wrong, and leaves no output behind. Small inputs: the whole script takes seconds.
+set -u
+S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
+B=$XFEM_BIN; PROBLEM=$XFEM_SOURCE/pipelines/beam/problem.json
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect <exit code> <text> <command...>: exactly one line on stderr, containing <text>.
+expect() {
+  local code=$1 text=$2; shift 2
+  "$@" >"$S/out.txt" 2>"$S/err.txt"; local rc=$?
+  [ $rc -eq "$code" ] || fail "expected exit $code, got $rc: $* -> $(cat "$S/err.txt")"
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] || fail "expected one line on stderr: $* -> $(cat "$S/err.txt")"
+  grep -qF -- "$text" "$S/err.txt" || fail "expected '$text': $* -> $(cat "$S/err.txt")"
+}
+absent() { for f in "$@"; do [ ! -e "$f" ] || fail "$f left behind"; done; }
+
+# A small cut beam and a second, different cut (the same plane, shifted).
+"$B/xfem-mesh" -q box --cells 3 5 13 --hi 0.03 0.06 0.2 -o "$S/beam.vtu" || fail "xfem-mesh box"
+"$B/xfem-mesh" -q cut-rect --beam-cut -o "$S/cut.vtp" || fail "cut-rect"
+"$B/xfem-mesh" -q cut-rect --corner -0.01 -0.01 0.11 --edge1 0.025 0 0 --edge2 0 0.08 0 -o "$S/other.vtp" || fail "other cut"
+"$B/xfem-classify" -q "$S/beam.vtu" --cut "$S/cut.vtp" -o "$S/classified.vtu" || fail "classify"
+"$B/xfem-enrich" -q "$S/classified.vtu" -o "$S/enriched.vtu" || fail "enrich"
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/system" || fail "assemble"
+"$B/xfem-solve" -q "$S/system" -o "$S/u.mtx" || fail "solve"
+grep -q "^% xfem-fingerprint enriched fnv1a64:" "$S/u.mtx" || fail "u.mtx records no fingerprint: $(head -3 "$S/u.mtx")"
+
+# 2. Files that do not belong together: refused, naming both files.
+expect 1 "other.vtp: not the cut $S/enriched.vtu was classified with" \
+  "$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/other.vtp" --problem "$PROBLEM" -o "$S/sys2"
+absent "$S/sys2"
+expect 1 "other.vtp: not the cut" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/other.vtp" -s "$S/u.mtx" -p "$PROBLEM" -o "$S/d.vtu"
+expect 1 "other.vtp: not the cut" \
+  "$B/xfem-rmserror" -q "$S/enriched.vtu" --cut "$S/other.vtp" -s "$S/u.mtx" --exact "$XFEM_SOURCE/pipelines/verification/data/rigid_exact.json"
+absent "$S/d.vtu"
+# A solution of another system of the same size: the same mesh and cut, another problem.
+sed 's/"E": 300e3/"E": 400e3/' "$PROBLEM" >"$S/stiffer.json"
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" -o "$S/system2" || fail "assemble 2"
+"$B/xfem-solve" -q "$S/system2" -o "$S/u2.mtx" || fail "solve 2"
+expect 1 "u2.mtx: does not belong to $PROBLEM (made for the problem" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u2.mtx" -p "$PROBLEM" -o "$S/d.vtu"
+absent "$S/d.vtu"
+# ... and of another mesh of the same size (the same grid, moved): its enriched fingerprint differs.
+"$B/xfem-mesh" -q box --cells 3 5 13 --lo 0 0.001 0 --hi 0.03 0.061 0.2 -o "$S/moved.vtu" || fail "moved box"
+"$B/xfem-classify" -q "$S/moved.vtu" --cut "$S/cut.vtp" -o "$S/moved_c.vtu" || fail "classify moved"
+"$B/xfem-enrich" -q "$S/moved_c.vtu" -o "$S/moved_e.vtu" || fail "enrich moved"
+"$B/xfem-assemble" -q "$S/moved_e.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/system3" || fail "assemble 3"
+"$B/xfem-solve" -q "$S/system3" -o "$S/u3.mtx" || fail "solve 3"
+expect 1 "u3.mtx: does not belong to $S/enriched.vtu" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u3.mtx" -p "$PROBLEM" -o "$S/d.vtu"
+# The matching files still work, and files without fingerprints (earlier versions) are accepted.
+"$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -p "$PROBLEM" -o "$S/d.vtu" || fail "visualize"
+grep -v "^% xfem-fingerprint" "$S/u.mtx" >"$S/u_old.mtx"
+"$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_old.mtx" -p "$PROBLEM" -o "$S/d_old.vtu" \
+  || fail "a u.mtx without fingerprints must be accepted"
+
+# 3. Crashes: deeply nested JSON, absurd coordinates.
+python3 -c "print('[' * 100000 + ']' * 100000)" >"$S/deep.json"
+expect 1 "deep.json: JSON nested deeper than 64 levels" \
+  "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/deep.json" -o "$S/sys4"
+expect 1 "deep.json: JSON nested deeper" \
+  "$B/xfem-rmserror" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" --exact "$S/deep.json"
+expect 1 "coordinates must lie within 1e6 m" \
+  "$B/xfem-mesh" unstructured-box --hi 1e300 1e300 1e300 --size 1e299 -o "$S/huge.vtu"
+absent "$S/sys4" "$S/huge.vtu"
+
+# 4. Non-finite values: options, problem, solution.
+expect 2 "--hi nan: not a finite number" "$B/xfem-mesh" box --cells 1 1 1 --hi nan 1 1 -o "$S/n.vtu"
+expect 2 "--amplitude inf: not a finite number" "$B/xfem-mesh" cut-sine --amplitude inf -o "$S/n.vtp"
+expect 2 "--tip-radius nan: not a finite number" \
+  "$B/xfem-classify" "$S/beam.vtu" --cut "$S/cut.vtp" -o "$S/n.vtu" --tip-radius nan
+expect 2 "--drop-tiny-enrichment NaN: not a finite number" \
+  "$B/xfem-solve" "$S/system" -o "$S/n.mtx" --drop-tiny-enrichment NaN
+expect 2 "--rtol nan: not a finite number" "$B/xfem-solve" "$S/system" -o "$S/n.mtx" --rtol nan
+expect 2 "--scale nan: not a finite number" \
+  "$B/xfem-visualize" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -p "$PROBLEM" -o "$S/n.vtu" --scale=nan
+expect 2 "--max nan: not a finite number" \
+  "$B/xfem-rmserror" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -r "$S/d.vtu" --max nan
+expect 2 "--radius 1e999: not a finite number" \
+  "$B/xfem-rmserror" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -r "$S/d.vtu" --radius 1e999
+expect 2 "value -5 is not a non-negative number" \
+  "$B/xfem-rmserror" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -r "$S/d.vtu" --radius -5
+absent "$S/n.vtu" "$S/n.vtp" "$S/n.mtx"
+sed 's/"E": 300e3/"E": 1e308/' "$PROBLEM" >"$S/huge_e.json"
+expect 1 "refusing to write a non-finite value" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_old.mtx" -p "$S/huge_e.json" -o "$S/n.vtu"
+awk 'NR <= 2 { print; next } { print ($1 == 0 ? 0 : $1 * 1e196) }' "$S/u_old.mtx" >"$S/u_huge.mtx"
+expect 1 "refusing to write a non-finite value" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_huge.mtx" -p "$PROBLEM" -o "$S/n.vtu"
+absent "$S/n.vtu"
+sed 's/"E": 300e3/"E": 1e999/' "$PROBLEM" >"$S/overflow.json"
+expect 1 "overflow.json: a number in the JSON is too large for a double" \
+  "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/overflow.json" -o "$S/sys5"
+
+# 5. Unbounded cost: refused with the estimate, before any work.
+expect 1 "tets requested (limit 2e+07" "$B/xfem-mesh" unstructured-box --hi 1 1 1 --size 1e-9 -o "$S/big.vtu"
+expect 1 "tets requested (limit 2e+07" "$B/xfem-mesh" organ --size 1e-9 -o "$S/big.vtu"
+expect 1 "triangles requested" "$B/xfem-mesh" cut-disc --rings 100000 -o "$S/big.vtp"
+expect 2 "value 100000 is not in [1, 1000]" \
+  "$B/xfem-rmserror" "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" --exact "$S/deep.json" --samples 100000
+expect 1 "integration points in" \
+  "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --points 100000 --refine 8 -o "$S/sys6"
+absent "$S/big.vtu" "$S/big.vtp" "$S/sys6"
+
+# 6. Malformed input.
+printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 104 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n' >"$S/phantom.vtk"
+expect 1 "phantom.vtk: POINTS claims 104 points but only 12 coordinates follow (312 expected)" \
+  "$B/xfem-classify" "$S/phantom.vtk" -o "$S/n.vtu"
+{ cat "$S/u.mtx"; echo 1.5; } >"$S/extra.mtx"
+expect 1 "extra.mtx: line" "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/extra.mtx" -p "$PROBLEM" -o "$S/n.vtu"
+printf '%%%%MatrixMarket matrix coordinate real general\n3 1 1\n1 1 0.5\n' >"$S/sparse_u.mtx"
+expect 1 "sparse_u.mtx: a sparse (coordinate) Matrix Market file" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/sparse_u.mtx" -p "$PROBLEM" -o "$S/n.vtu"
+cp -r "$S/system" "$S/dup"; awk 'NR == 2 { $3 = $3 + 1 } { print } NR == 3 { print }' "$S/system/K.mtx" >"$S/dup/K.mtx"
+expect 1 "K.mtx: an entry appears twice" "$B/xfem-solve" "$S/dup" -o "$S/n.mtx"
+cp -r "$S/system" "$S/upper"; awk 'NR == 4 && $1 != $2 { t = $1; $1 = $2; $2 = t } { print }' "$S/system/K.mtx" >"$S/upper/K.mtx"
+expect 1 "above the diagonal in a symmetric file" "$B/xfem-solve" "$S/upper" -o "$S/n.mtx"
+absent "$S/n.vtu" "$S/n.mtx"
+
+# 7. Outputs checked before any work: nothing left behind.
+expect 1 "missing_dir/s.json: directory" \
+  "$B/xfem-classify" -q "$S/beam.vtu" --cut "$S/cut.vtp" -o "$S/c7.vtu" --summary "$S/missing_dir/s.json"
+absent "$S/c7.vtu"
+expect 1 "missing_dir/r.json: directory" "$B/xfem-solve" -q "$S/system" -o "$S/u7.mtx" --report "$S/missing_dir/r.json"
+expect 1 "missing_dir/u.mtx: directory" "$B/xfem-solve" -q "$S/system" -o "$S/missing_dir/u.mtx"
+absent "$S/u7.mtx"
+expect 1 "faces.txt: unknown extension '.txt'" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u.mtx" -p "$PROBLEM" -o "$S/d7.vtu" --faces "$S/faces.txt"
+absent "$S/d7.vtu"
+
+# 8. Clear messages: header sizes checked before allocating; short numbers; -q shows errors only.
+printf 'OFF\n4 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n' >"$S/huge.off"
+expect 1 "huge.off: the OFF header claims 4 vertices and 2000000000 faces" \
+  "$B/xfem-classify" "$S/beam.vtu" --cut "$S/huge.off" -o "$S/n.vtu"
+printf '%%%%MatrixMarket matrix array real general\n1000000000000 1\n1\n' >"$S/rows.mtx"
+expect 1 "rows.mtx: the size line claims 1000000000000 values" \
+  "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/rows.mtx" -p "$PROBLEM" -o "$S/n.vtu"
+expect 2 "--refine: value 1e+300 is not in [0, 8]" \
+  "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --refine 1e300 -o "$S/n"
+absent "$S/n.vtu" "$S/n"
+"$B/xfem-classify" -q "$S/beam.vtu" --cut "$S/other.vtp" -o "$S/miss.vtu" --summary "$S/missing_dir/x.json" 2>"$S/err.txt"
+[ "$(grep -c warning "$S/err.txt")" -eq 0 ] || fail "-q printed a warning: $(cat "$S/err.txt")"
+
+# The command line: "did you mean", no default shown on required options.
+expect 2 "unknown command 'boxx' (did you mean 'box'?)" "$B/xfem-mesh" boxx --cells 1 1 1 --hi 1 1 1 -o "$S/n.vtu"
+expect 2 "unknown option --cuts (did you mean --cut?)" "$B/xfem-classify" "$S/beam.vtu" --cuts "$S/cut.vtp" -o "$S/n.vtu"
+"$B/xfem-mesh" box --help | grep -- "--hi" | grep -q "REQUIRED" || fail "--hi must show REQUIRED"
+! "$B/xfem-mesh" box --help | grep -- "--hi" | grep -q "\[0,0,0\]" || fail "--hi shows a default: $("$B/xfem-mesh" box --help | grep -- --hi)"
+echo "ok"

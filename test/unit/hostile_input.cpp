@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// Readers against hostile files: each bad input is one xfem::Error naming the file and the
+// problem, raised before any large allocation; never a crash, another exception or a hang.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+
+#include "xfem/error.h"
+#include "xfem/json_io.h"
+#include "xfem/linear_system.h"
+#include "xfem/matrix_market.h"
+#include "xfem/problem.h"
+#include "xfem/vtk_io.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+std::string scratch(const std::string& name, const std::string& text) {
+  const auto dir = fs::temp_directory_path() / "xfem_unit_hostile";
+  fs::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+}  // namespace
+
+TEST_CASE("hostile: deeply nested JSON is refused before parsing (no stack overflow)", "[hostile]") {
+  const std::string deep = scratch("deep.json", std::string(100000, '[') + std::string(100000, ']'));
+  CHECK_THROWS_WITH(xfem::read_json(deep), Catch::Contains("deep.json: JSON nested deeper than 64 levels (byte 65)"));
+  // Brackets inside strings do not count.
+  CHECK_NOTHROW(xfem::read_json(scratch("strings.json", "{\"a\": \"" + std::string(1000, '[') + "\"}")));
+}
+
+TEST_CASE("hostile: a JSON number beyond the double range names the file", "[hostile]") {
+  CHECK_THROWS_WITH(xfem::read_json(scratch("big.json", "{\"E\": 1e999}")),
+                    Catch::EndsWith("big.json: a number in the JSON is too large for a double (beyond 1.8e308)"));
+}
+
+TEST_CASE("hostile: write_json refuses NaN and Inf, naming the key", "[hostile]") {
+  xfem::Json j;
+  j["a"]["b"] = std::vector<double>{1.0, std::numeric_limits<double>::infinity()};
+  const std::string path = scratch("nan.json", "");
+  fs::remove(path);
+  CHECK_THROWS_WITH(xfem::write_json(j, path), Catch::Contains("non-finite value (NaN or Inf) in 'a.b[1]'"));
+  CHECK_FALSE(fs::exists(path));
+}
+
+TEST_CASE("hostile: Matrix Market sizes are checked against the file before allocating", "[hostile]") {
+  CHECK_THROWS_WITH(xfem::read_vector(scratch("rows.mtx", "%%MatrixMarket matrix array real general\n1000000000000 1\n1\n")),
+                    Catch::Contains("rows.mtx: the size line claims 1000000000000 values but only"));
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("nnz.mtx", "%%MatrixMarket matrix coordinate real general\n10 10 1000000000000000\n1 1 1\n")),
+      Catch::Contains("nnz.mtx: the size line claims 1000000000000000 entries"));
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("wide.mtx", "%%MatrixMarket matrix coordinate real general\n1000000000000 1 1\n1 1 1\n")),
+      Catch::Contains("is larger than supported"));
+}
+
+TEST_CASE("hostile: Matrix Market content that would be silently misread is refused", "[hostile]") {
+  CHECK_THROWS_WITH(xfem::read_vector(scratch("extra.mtx", "%%MatrixMarket matrix array real general\n2 1\n1\n2\n3\n")),
+                    Catch::Contains("extra.mtx: line 5: more values than the 2 entries the size line announces"));
+  CHECK_THROWS_WITH(
+      xfem::read_vector(scratch("sparse.mtx", "%%MatrixMarket matrix coordinate real general\n3 1 1\n1 1 0.5\n")),
+      Catch::Contains("sparse.mtx: a sparse (coordinate) Matrix Market file, expected a dense (array) vector"));
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("dup.mtx", "%%MatrixMarket matrix coordinate real general\n2 2 3\n1 1 1\n2 2 1\n1 1 5\n")),
+      Catch::Contains("dup.mtx: an entry appears twice"));
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("upper.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n1 2 1\n")),
+      Catch::Contains("upper.mtx: line 4: entry (1, 2) above the diagonal in a symmetric file"));
+  // Trailing white space is fine.
+  CHECK(xfem::read_vector(scratch("ok.mtx", "%%MatrixMarket matrix array real general\n2 1\n1\n2\n\n  \n")).size() == 2);
+}
+
+TEST_CASE("hostile: legacy VTK with fewer points than POINTS claims is refused", "[hostile]") {
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  const std::string cells = "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("phantom.vtk", head + "POINTS 104 double\n0 0 0 1 0 0 0 1 0 0 0 1\n" + cells)),
+                    Catch::Contains("phantom.vtk: POINTS claims 104 points but only 12 coordinates follow"));
+  CHECK(xfem::read_tet_mesh(scratch("fine.vtk", head + "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n" + cells)).tets.rows() == 1);
+}
+
+TEST_CASE("hostile: an OFF header claiming 2e9 faces is refused before allocating", "[hostile]") {
+  CHECK_THROWS_WITH(xfem::read_triangle_mesh(scratch("huge.off", "OFF\n4 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n")),
+                    Catch::Contains("huge.off: the OFF header claims 4 vertices and 2000000000 faces"));
+  CHECK(xfem::read_triangle_mesh(scratch("ok.off", "OFF\n# a comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).triangles.rows() == 1);
+}
+
+TEST_CASE("hostile: mesh writers refuse non-finite values, naming the array", "[hostile]") {
+  xfem::TetMesh m;
+  m.points.resize(4, 3);
+  m.points << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  m.tets.resize(1, 4);
+  m.tets << 0, 1, 2, 3;
+  m.cell_data["von_mises"] = xfem::make_array(xfem::DataArray::Type::Float64, 1, 1, std::numeric_limits<double>::infinity());
+  const std::string path = scratch("inf.vtu", "");
+  fs::remove(path);
+  CHECK_THROWS_WITH(xfem::write_tet_mesh(m, path),
+                    Catch::Contains("refusing to write a non-finite value (inf) in cell array 'von_mises' at tuple 0"));
+  CHECK_FALSE(fs::exists(path));
+  m.cell_data.clear();
+  m.points(3, 2) = std::nan("");
+  CHECK_THROWS_WITH(xfem::write_tet_mesh(m, path), Catch::Contains("refusing to write point 3"));
+}
+
+TEST_CASE("hostile: the fuzzing regressions are rejected cleanly", "[hostile][fuzz-regressions]") {
+  using Reader = std::function<void(const std::string&)>;
+  const std::map<std::string, Reader> readers = {
+      {"vtu", [](const std::string& p) { xfem::read_tet_mesh(p); }},
+      {"vtk_mesh", [](const std::string& p) { xfem::read_tet_mesh(p); }},
+      {"vtk_surface", [](const std::string& p) { xfem::read_triangle_mesh(p); }},
+      {"vtp", [](const std::string& p) { xfem::read_triangle_mesh(p); }},
+      {"stl", [](const std::string& p) { xfem::read_triangle_mesh(p); }},
+      {"obj", [](const std::string& p) { xfem::read_triangle_mesh(p); }},
+      {"off", [](const std::string& p) { xfem::read_triangle_mesh(p); }},
+      {"mtx_matrix", [](const std::string& p) { xfem::read_matrix(p); }},
+      {"mtx_vector", [](const std::string& p) { xfem::read_vector(p); }},
+      {"problem", [](const std::string& p) { xfem::read_problem(p); }},
+      {"exact", [](const std::string& p) { xfem::read_exact_field(p); }},
+  };
+  int files = 0;
+  for (const auto& dir : fs::directory_iterator(std::string(XFEM_TEST_DATA) + "/fuzz-regressions")) {
+    if (!dir.is_directory()) continue;
+    const std::string reader = dir.path().filename().string();
+    REQUIRE(readers.count(reader) == 1);
+    for (const auto& file : fs::directory_iterator(dir.path())) {
+      INFO(file.path().string());
+      ++files;
+      try {
+        readers.at(reader)(file.path().string());
+      } catch (const xfem::Error& e) {
+        CHECK(std::string(e.what()).find(file.path().string()) == 0);  // names the file
+      }
+    }
+  }
+  CHECK(files >= 6);
+}
