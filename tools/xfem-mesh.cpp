@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
 
   return xfem::cli::run(*tool, argc, argv, [&] {
     const bool mesh_out = box->parsed() || ubox->parsed() || organ->parsed() || surf->parsed();
-    xfem::cli::check_output(out, {mesh_out ? ".vtu" : ".vtp"});
+    xfem::cli::check_output(out, mesh_out ? std::vector<std::string>{".vtu"} : std::vector<std::string>{".vtp", ".vtu"});
     for (const auto& [a, name] : {std::pair<const V3*, const char*>{&lo, "--lo"}, {&hi, "--hi"}, {&corner, "--corner"},
                                   {&edge1, "--edge1"}, {&edge2, "--edge2"}, {&center, "--center"}})
       check_extent(*a, name);

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});
-    if (!faces.empty()) xfem::cli::check_output(faces, {".vtp"});
+    if (!faces.empty()) xfem::cli::check_output(faces, {".vtp", ".vtu"});
     if (!png.empty()) xfem::cli::check_output(png, {".png"});
     if (!png.empty() && !std::getenv("DISPLAY"))
       throw xfem::Error(png + ": rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");

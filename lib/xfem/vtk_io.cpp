@@ -656,7 +656,7 @@ TriangleMesh read_off(const std::string& path, bool obj = false) {
   std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::ifstream in(path);
-  {  // The counts in the header, checked against the file's size before CGAL allocates for them.
+  if (!obj) {  // OFF: the counts in the header, checked against the file size before CGAL allocates.
     std::vector<std::string> words;  // the first words, comments left out
     std::string line, word;
     while (words.size() < 3 && std::getline(in, line)) {
@@ -766,7 +766,7 @@ void keep_cells(DataArrays& arrays, const std::vector<int>& kept) {
 void write_triangle_grid(const TriangleMesh& mesh, const std::string& path) {
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
-  grid->SetPoints(to_vtk(mesh.points));
+  grid->SetPoints(to_vtk(mesh.points, path));
   auto offsets = Ptr<vtkIdTypeArray>::New();
   auto connectivity = Ptr<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(mesh.triangles.rows() + 1);

@@ -23,7 +23,7 @@ absent() { for f in "$@"; do [ ! -e "$f" ] || fail "$f left behind"; done; }
 "$B/xfem-mesh" -q cut-rect --corner -0.01 -0.01 0.11 --edge1 0.025 0 0 --edge2 0 0.08 0 -o "$S/other.vtp" || fail "other cut"
 "$B/xfem-classify" -q "$S/beam.vtu" --cut "$S/cut.vtp" -o "$S/classified.vtu" || fail "classify"
 "$B/xfem-enrich" -q "$S/classified.vtu" -o "$S/enriched.vtu" || fail "enrich"
-"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/system" || fail "assemble"
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --format mtx -o "$S/system" || fail "assemble"
 "$B/xfem-solve" -q "$S/system" -o "$S/u.mtx" || fail "solve"
 grep -q "^% xfem-fingerprint enriched fnv1a64:" "$S/u.mtx" || fail "u.mtx records no fingerprint: $(head -3 "$S/u.mtx")"
 

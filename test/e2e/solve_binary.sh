@@ -7,7 +7,7 @@ S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
 B=$XFEM_BIN; SOLVE=$B/xfem-solve; PROBLEM=$XFEM_SOURCE/pipelines/beam/problem.json
 fail() { echo "FAIL: $*"; exit 1; }
 json() { sed -n "s/.*\"$1\": *\"\{0,1\}\([^,\"]*\).*/\1/p" "$2"; }
-maxdiff() { paste <(tail -n +3 "$1") <(tail -n +3 "$2") | awk '{d=$1-$2; if(d<0)d=-d; if(d>m)m=d} END{printf "%.3g\n", m+0}'; }
+maxdiff() { paste <(grep -v '^%' "$1" | tail -n +2) <(grep -v '^%' "$2" | tail -n +2) | awk '{d=$1-$2; if(d<0)d=-d; if(d>m)m=d} END{printf "%.3g\n", m+0}'; }
 expect_error() {  # expect_error <text> <system dir> [args]: exit 1, one error line naming the problem, no output
   local text=$1 dir=$2; shift 2
   rm -f "$S/bad.mtx"
