@@ -85,6 +85,26 @@ struct FaceHash {
   }
 };
 
+/// A tet's corners, bounding box and barycentric coordinates, for clipping segments to it.
+struct TetGeometry {
+  Eigen::Vector3d P[4];
+  CGAL::Bbox_3 box;
+  Eigen::Matrix3d Jinv;
+  TetGeometry(const TetMesh& mesh, long t) {
+    for (int k = 0; k < 4; ++k) {
+      P[k] = mesh.points.row(mesh.tets(t, k)).transpose();
+      box += to_cgal(P[k]).bbox();
+    }
+    Eigen::Matrix3d J;
+    J << P[1] - P[0], P[2] - P[0], P[3] - P[0];
+    Jinv = J.inverse();
+  }
+  Eigen::Vector4d barycentric(const Eigen::Vector3d& x) const {
+    const Eigen::Vector3d l = Jinv * (x - P[0]);
+    return Eigen::Vector4d(1 - l.sum(), l[0], l[1], l[2]);
+  }
+};
+
 /// The front (rule D4 and the orientation of crack_front.h): each boundary edge of the cut is
 /// clipped to the candidate tets (cut tets and their node neighbours: a front inside the body
 /// runs through them), the pieces of one edge merged, and pieces lying on the body's surface
@@ -108,22 +128,11 @@ CrackFront extract_front(const TetMesh& mesh, const CutSurface& cut, const std::
   constexpr double eps = 1e-10;  // barycentric tolerance: a piece this close to a face lies on it
   for (int t = 0; t < mesh.tets.rows(); ++t) {
     if (!candidate[t]) continue;
-    Eigen::Vector3d P[4];
-    CGAL::Bbox_3 box;
-    for (int k = 0; k < 4; ++k) {
-      P[k] = mesh.points.row(mesh.tets(t, k)).transpose();
-      box += to_cgal(P[k]).bbox();
-    }
+    const TetGeometry tg(mesh, t);
     hits.clear();
-    tree.all_intersected_primitives(box, std::back_inserter(hits));
+    tree.all_intersected_primitives(tg.box, std::back_inserter(hits));
     if (hits.empty()) continue;
-    Eigen::Matrix3d J;
-    J << P[1] - P[0], P[2] - P[0], P[3] - P[0];
-    const Eigen::Matrix3d Jinv = J.inverse();
-    auto bary = [&](const Eigen::Vector3d& x) {
-      const Eigen::Vector3d l = Jinv * (x - P[0]);
-      return Eigen::Vector4d(1 - l.sum(), l[0], l[1], l[2]);
-    };
+    auto bary = [&](const Eigen::Vector3d& x) { return tg.barycentric(x); };
     std::sort(hits.begin(), hits.end());
     for (const auto& h : hits) {
       const int e = static_cast<int>(h - segments.cbegin());
@@ -200,22 +209,11 @@ std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, co
     std::vector<SegmentTree::Primitive_id> hits;
     for (long t = b; t < e; ++t) {
       if (!candidate[t]) continue;
-      Eigen::Vector3d P[4];
-      CGAL::Bbox_3 box;
-      for (int k = 0; k < 4; ++k) {
-        P[k] = mesh.points.row(mesh.tets(t, k)).transpose();
-        box += to_cgal(P[k]).bbox();
-      }
+      const TetGeometry tg(mesh, t);
       hits.clear();
-      tree.all_intersected_primitives(box, std::back_inserter(hits));
+      tree.all_intersected_primitives(tg.box, std::back_inserter(hits));
       if (hits.empty()) continue;
-      Eigen::Matrix3d J;
-      J << P[1] - P[0], P[2] - P[0], P[3] - P[0];
-      const Eigen::Matrix3d Jinv = J.inverse();
-      auto bary = [&](const Eigen::Vector3d& x) {
-        const Eigen::Vector3d l = Jinv * (x - P[0]);
-        return Eigen::Vector4d(1 - l.sum(), l[0], l[1], l[2]);
-      };
+      auto bary = [&](const Eigen::Vector3d& x) { return tg.barycentric(x); };
       constexpr double eps = 1e-10;  // barycentric: a front this close to a face lies on it
       for (const auto& h : hits) {
         const FrontSegment& fs = segs[h - segments.cbegin()];
