@@ -1,6 +1,6 @@
 # The runs of a convergence study, shared by pipelines/convergence (the paper's load) and
 # pipelines/convergence-wellposed (a load every mesh resolves). The including Makefile sets
-# PROBLEM (problem.json), POINTS (oversampling points per enriched tet), REF (a directory with
+# PROBLEM (problem.json), RULE (xfem-assemble integration options), REF (a directory with
 # the reference's enriched.vtu and u.mtx) and PROBES (a CSV of points for xfem-probe).
 # Run directories, each out/<family>-<mesh>/:
 #   xfem-SIZE   X-FEM on an unstructured CGAL mesh of target edge length SIZE, not cut-aligned;
@@ -22,7 +22,7 @@ out/xgrid-%/mesh.vtu:
 out/x%/classified.vtu: out/x%/mesh.vtu out/cut.vtp
 	$(BIN)/xfem-classify $(QUIET) $< --cut out/cut.vtp --summary $(@D)/classify.json -o $@
 out/x%/system/system.json: out/x%/enriched.vtu out/cut.vtp $(PROBLEM)
-	$(BIN)/xfem-assemble $(QUIET) $< --cut out/cut.vtp --problem $(PROBLEM) --points $(POINTS) -o $(@D)
+	$(BIN)/xfem-assemble $(QUIET) $< --cut out/cut.vtp --problem $(PROBLEM) $(RULE) -o $(@D)
 out/x%/rms.json: out/x%/u.mtx $(REF)/enriched.vtu $(REF)/u.mtx
 	$(BIN)/xfem-rmserror $(QUIET) $(@D)/enriched.vtu --cut out/cut.vtp --solution $< \
 	  --reference $(REF)/enriched.vtu --reference-solution $(REF)/u.mtx -o $@ > /dev/null
