@@ -195,11 +195,14 @@ CrackFront extract_front(const TetMesh& mesh, const CutSurface& cut, const std::
   return CrackFront(std::move(front));
 }
 
-/// How each candidate tet meets the front: 0 not at all, 1 at a point only (a corner or an edge
-/// point of the tet lies on the front), 2 along a piece of positive length (the front passes
-/// through the tet, or along one of its faces or edges).
-std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, const std::vector<char>& candidate) {
+/// How each candidate tet meets the front: 0 not at all, 1 on its boundary only (along a face or an
+/// edge, or at a point), 2 through its inside. `corners` (4 bits per tet) marks the corners whose
+/// star (the tets around the node) holds the contact in its inside: every corner for a front
+/// through the tet, the corners of the face, edge or vertex the front lies on otherwise.
+std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, const std::vector<char>& candidate,
+                                std::vector<unsigned char>& corners) {
   std::vector<char> contact(mesh.tets.rows(), 0);
+  corners.assign(mesh.tets.rows(), 0);
   const auto& segs = front.segments();
   if (segs.empty()) return contact;
   std::vector<Segment> segments;
@@ -239,6 +242,8 @@ std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, co
         const bool inside = mid.minCoeff() > 1e-9;
         const char kind = (s1 - s0) * length > 1e-9 * length + tolerance * length && inside ? 2 : 1;
         contact[t] = std::max(contact[t], kind);
+        for (int k = 0; k < 4; ++k)
+          if (kind == 2 || mid[k] > 1e-9) corners[t] |= static_cast<unsigned char>(1u << k);
         if (contact[t] == 2) break;
       }
     }
@@ -346,7 +351,8 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
   for (long t = 0; t < T; ++t)
     for (int k = 0; k < 4; ++k) candidate[t] |= near_node[mesh.tets(t, k)];
   c.front = extract_front(mesh, cut, candidate);
-  const std::vector<char> contact = front_contact(mesh, c.front, candidate);
+  std::vector<unsigned char> corners;
+  const std::vector<char> contact = front_contact(mesh, c.front, candidate, corners);
   if (options.progress) options.progress(0.92);
 
   // 5. The tets the cut separates: split along the cut (cut_pieces.h), exact volumes per side.
@@ -377,16 +383,16 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
     }
   });
 
-  // 6. Enrichment. Branch: the nodes of every tet the front touches (passes through, or touches at a
-  //    point: there the cut's extension ahead of the front would otherwise open a sign function).
+  // 6. Enrichment. Branch: every node whose star (the tets around it) holds the front in its inside:
+  //    the nodes of a tet the front passes through, and of a face, edge or vertex it lies on.
   //    Sign: the other nodes of completely cut tets whose support has volume on the side opposite
   //    the node's own, at least options.tiny_support of the support's volume; below that the sign
   //    function is nearly zero and makes K near-singular, and it is removed (counted, sign_tiny).
   c.enrichment.assign(V, Enrichment::None);
   std::vector<double> support(V, 0.0), opposite(V, 0.0);
   for (long t = 0; t < T; ++t) {
-    if (contact[t])
-      for (int k = 0; k < 4; ++k) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
+    for (int k = 0; k < 4; ++k)
+      if (corners[t] & (1u << k)) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
     const double v = std::abs(signed_volume(mesh, static_cast<int>(t)));
     for (int k = 0; k < 4; ++k) {
       const int m = mesh.tets(t, k);
