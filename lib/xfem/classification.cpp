@@ -400,10 +400,8 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       if (c.cut_class[t] == CutClass::Complete) opposite[m] += c.side[m] > 0 ? below[t] : above[t];
     }
   }
-  c.opposite_fraction.assign(V, 0.0);
   for (long m = 0; m < V; ++m) {
     const double fraction = support[m] > 0 ? opposite[m] / support[m] : 0.0;
-    c.opposite_fraction[m] = fraction;
     if (c.enrichment[m] != Enrichment::None || !(fraction > 1e-12)) continue;
     if (fraction >= options.tiny_support) c.enrichment[m] = Enrichment::Sign;
     else ++c.counts.sign_tiny;

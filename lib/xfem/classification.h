@@ -35,7 +35,6 @@ struct Classification {
   std::vector<CutClass> cut_class;    ///< per tet
   std::vector<int> cut_edges;         ///< per tet: how many of its 6 edges are cut (0..6)
   std::vector<int> cut_faces;         ///< per tet: how many of its 4 faces are completely cut
-  std::vector<double> opposite_fraction;  ///< per point: volume of its support on the other side of the cut / support volume
   CrackFront front;                   ///< the cut front inside the body, oriented (crack_front.h)
 
   /// Summary counts (array `classification_counts`, JSON of --summary).

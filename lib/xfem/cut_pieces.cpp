@@ -107,12 +107,16 @@ double polygon_area(const std::vector<Eigen::Vector3d>& polygon) {
 }
 
 CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut) {
+  return split_by_cut(p, cut, cut.triangles_meeting(p));
+}
+
+CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles) {
   const double whole = volume(p);
   const double tolerance = 1e-12 * longest_edge(p);
   const double area_tolerance = 1e-10 * longest_edge(p) * longest_edge(p);
   const TriangleMesh& cm = cut.mesh();
   std::vector<TetCorners> pieces{p}, next, above, below;
-  for (const int f : cut.triangles_meeting(p)) {
+  for (const int f : triangles) {
     const Eigen::Vector3d n = cut.unit_normal(f), c = cm.points.row(cm.triangles(f, 0)).transpose();
     next.clear();
     for (const TetCorners& q : pieces) {

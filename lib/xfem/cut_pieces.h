@@ -36,6 +36,10 @@ double polygon_area(const std::vector<Eigen::Vector3d>& polygon);
 /// its front passes through (there H also jumps across the cut's extension ahead of the front).
 CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut);
 
+/// The same, given `triangles`: the cut's triangles that meet p (CutSurface::triangles_meeting),
+/// for callers that need them too.
+CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles);
+
 /// The pieces of tet p on either side of the plane through `point` with unit `normal` (side +1 on
 /// the normal's side), appended to `above` and `below`. Corners within `tolerance` of the plane count
 /// as on it; a tet the plane does not cross goes whole to its side. Exposed for tests.

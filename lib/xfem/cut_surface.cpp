@@ -208,12 +208,6 @@ std::vector<int> CutSurface::triangles_meeting(const std::array<Eigen::Vector3d,
   return out;
 }
 
-bool CutSurface::triangle_meets(int t, const std::array<Eigen::Vector3d, 4>& p) const {
-  const Kernel::Tetrahedron_3 tet = to_cgal(p);
-  if (tet.is_degenerate()) return false;
-  return CGAL::do_intersect(impl_->triangles.at(t), tet);
-}
-
 Eigen::Vector3d CutSurface::unit_normal(int t) const {
   if (t < 0 || t >= static_cast<int>(impl_->normals.size()))
     throw Error("cut surface: triangle index " + std::to_string(t) + " out of range");

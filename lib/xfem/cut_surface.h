@@ -56,9 +56,6 @@ class CutSurface {
   /// predicates on the given coordinates).
   std::vector<int> triangles_meeting(const std::array<Eigen::Vector3d, 4>& p) const;
 
-  /// Does triangle `t` meet the closed tetrahedron p? Exact predicates.
-  bool triangle_meets(int t, const std::array<Eigen::Vector3d, 4>& p) const;
-
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -238,8 +238,7 @@ struct Splitter {
 // Do the cut triangles meeting the tet all lie in one plane? Then the face-by-face split through
 // the edge points is exact and conforming; otherwise (a fold inside) the tet is split into its
 // exact pieces.
-bool planar_inside(const CutSurface& cut, const TetCorners& p) {
-  const std::vector<int> triangles = cut.triangles_meeting(p);
+bool planar_inside(const CutSurface& cut, const std::vector<int>& triangles, const TetCorners& p) {
   if (triangles.size() <= 1) return true;
   double h = 0;
   for (int i = 0; i < 4; ++i)
@@ -325,8 +324,9 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
       if (!cut_surface) cut_surface = std::make_unique<CutSurface>(cut);
       TetCorners corners;
       for (int c = 0; c < 4; ++c) corners[c] = s.node(v[c]);
-      if (!planar_inside(*cut_surface, corners)) {
-        const CutPieces pieces = split_by_cut(corners, *cut_surface);
+      const std::vector<int> meeting = cut_surface->triangles_meeting(corners);
+      if (!planar_inside(*cut_surface, meeting, corners)) {
+        const CutPieces pieces = split_by_cut(corners, *cut_surface, meeting);
         std::map<std::tuple<double, double, double, int>, int> ids;  // (position, side) -> output id
         auto id_of = [&](const Eigen::Vector3d& x, int sd) {
           for (int c = 0; c < 4; ++c)
@@ -348,7 +348,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
         // The wound: the cut's triangles clipped to the element, once per side, each oriented out
         // of its side's pieces (towards the other side).
         const TriangleMesh& cm = cut_surface->mesh();
-        for (const int f : cut_surface->triangles_meeting(corners)) {
+        for (const int f : meeting) {
           const std::vector<Eigen::Vector3d> polygon =
               clip_triangle(corners, cm.points.row(cm.triangles(f, 0)).transpose(),
                             cm.points.row(cm.triangles(f, 1)).transpose(), cm.points.row(cm.triangles(f, 2)).transpose());

@@ -623,6 +623,24 @@ TetMesh read_tet_mesh(const std::string& path, std::vector<std::string>* warning
   return mesh;
 }
 
+namespace {
+// Cells of one kind, a row of point ids each (tets or triangles), as a VTK cell array.
+template <class Cells>
+Ptr<vtkCellArray> cell_array(const Cells& cells) {
+  const Eigen::Index n = cells.rows(), k = cells.cols();
+  auto offsets = Ptr<vtkIdTypeArray>::New();
+  auto connectivity = Ptr<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(n * k);
+  for (Eigen::Index c = 0; c <= n; ++c) offsets->SetValue(c, k * c);
+  for (Eigen::Index c = 0; c < n; ++c)
+    for (Eigen::Index j = 0; j < k; ++j) connectivity->SetValue(k * c + j, cells(c, j));
+  auto out = Ptr<vtkCellArray>::New();
+  out->SetData(offsets, connectivity);
+  return out;
+}
+}  // namespace
+
 void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
   if (path != "-" && extension_of(path) != ".vtu")
     throw Error(path + ": volume meshes are written as .vtu, not '" + extension_of(path) + "'");
@@ -630,16 +648,7 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
   grid->SetPoints(to_vtk(mesh.points, name));
-  auto offsets = Ptr<vtkIdTypeArray>::New();
-  auto connectivity = Ptr<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(mesh.tets.rows() + 1);
-  connectivity->SetNumberOfValues(mesh.tets.size());
-  for (Eigen::Index t = 0; t <= mesh.tets.rows(); ++t) offsets->SetValue(t, 4 * t);
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
-    for (int k = 0; k < 4; ++k) connectivity->SetValue(4 * t + k, mesh.tets(t, k));
-  auto cells = Ptr<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  grid->SetCells(VTK_TETRA, cells);
+  grid->SetCells(VTK_TETRA, cell_array(mesh.tets));
   add_arrays(grid->GetPointData(), mesh.point_data, mesh.points.rows(), "point", name);
   add_arrays(grid->GetCellData(), mesh.cell_data, mesh.tets.rows(), "cell", name);
   add_arrays(grid->GetFieldData(), mesh.field_data, std::string::npos, "field", name);
@@ -767,16 +776,7 @@ void write_triangle_grid(const TriangleMesh& mesh, const std::string& path) {
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
   grid->SetPoints(to_vtk(mesh.points, path));
-  auto offsets = Ptr<vtkIdTypeArray>::New();
-  auto connectivity = Ptr<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(mesh.triangles.rows() + 1);
-  connectivity->SetNumberOfValues(mesh.triangles.size());
-  for (Eigen::Index f = 0; f <= mesh.triangles.rows(); ++f) offsets->SetValue(f, 3 * f);
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f)
-    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * f + k, mesh.triangles(f, k));
-  auto cells = Ptr<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  grid->SetCells(VTK_TRIANGLE, cells);
+  grid->SetCells(VTK_TRIANGLE, cell_array(mesh.triangles));
   add_arrays(grid->GetPointData(), mesh.point_data, mesh.points.rows(), "point", path);
   add_arrays(grid->GetCellData(), mesh.cell_data, mesh.triangles.rows(), "cell", path);
   write_atomically(path, [&](const std::string& tmp) {
@@ -932,16 +932,7 @@ void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
   VtkMessages messages;
   auto poly = Ptr<vtkPolyData>::New();
   poly->SetPoints(to_vtk(mesh.points, name));
-  auto offsets = Ptr<vtkIdTypeArray>::New();
-  auto connectivity = Ptr<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(mesh.triangles.rows() + 1);
-  connectivity->SetNumberOfValues(mesh.triangles.size());
-  for (Eigen::Index f = 0; f <= mesh.triangles.rows(); ++f) offsets->SetValue(f, 3 * f);
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f)
-    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * f + k, mesh.triangles(f, k));
-  auto polys = Ptr<vtkCellArray>::New();
-  polys->SetData(offsets, connectivity);
-  poly->SetPolys(polys);
+  poly->SetPolys(cell_array(mesh.triangles));
   add_arrays(poly->GetPointData(), mesh.point_data, mesh.points.rows(), "point", name);
   add_arrays(poly->GetCellData(), mesh.cell_data, mesh.triangles.rows(), "cell", name);
   write_atomically(path, [&](const std::string& tmp) {
