@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
+#include "xfem/consistent_gradients.h"
 #include "xfem/cut_pieces.h"
-#include "xfem/element_split.h"
 #include "xfem/enriched_basis.h"
 #include "xfem/error.h"
 #include "xfem/tet_shape.h"
@@ -229,50 +229,22 @@ CutElementSplits split_cut_elements(const EnrichedMesh& em) {
   const int tets = em.tets();
   out.index.assign(tets, -1);
   out.first.push_back(0);
-  std::vector<int> partial;
   bool any = false;
   if (!em.cut_class.empty())
-    for (int t = 0; t < tets; ++t) {
-      if (em.cut_class[t] == 1) partial.push_back(t);
-      any = any || em.cut_class[t] > 0;
-    }
+    for (int t = 0; t < tets && !any; ++t) any = em.cut_class[t] > 0;
   if (!any) return out;
   if (!em.cut) throw Error("conforming integration: the mesh has cut elements but no cut surface was given");
-  // Partially cut elements: split_mesh fans them from a point M on the front (element_split.h).
-  SplitMesh split;
-  std::vector<int> partial_first{0};
-  if (!partial.empty()) {
-    TetMesh sub;
-    sub.points = em.mesh.points;
-    sub.tets.resize(static_cast<Eigen::Index>(partial.size()), 4);
-    for (std::size_t i = 0; i < partial.size(); ++i) sub.tets.row(static_cast<Eigen::Index>(i)) = em.mesh.tets.row(partial[i]);
-    split = split_mesh(sub, em.side, std::vector<int>(partial.size(), 1), em.cut->mesh(), em.front.segments());
-    const int n = static_cast<int>(split.tets.rows());
-    for (std::size_t i = 0; i < partial.size(); ++i) {  // split_mesh emits them parent after parent
-      int end = partial_first.back();
-      while (end < n && split.parent[end] == static_cast<int>(i)) ++end;
-      partial_first.push_back(end);
-    }
-  }
-  std::size_t next_partial = 0;
+  const std::vector<FrontSegment>& front = em.front.segments();
   for (int t = 0; t < tets; ++t) {
     if (em.cut_class[t] == 0) continue;
     out.index[t] = static_cast<int>(out.first.size()) - 1;
-    if (em.cut_class[t] == 2) {
-      TetCorners p;
-      for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-      const CutPieces pieces = split_by_cut(p, *em.cut);
-      out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
-      out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
-    } else {
-      const std::size_t i = next_partial++;
-      for (int s = partial_first[i]; s < partial_first[i + 1]; ++s) {
-        std::array<Eigen::Vector3d, 4> q;
-        for (int c = 0; c < 4; ++c) q[c] = split.points.row(split.tets(s, c)).transpose();
-        out.tets.push_back(q);
-        out.side.push_back(split.tet_side[s]);
-      }
-    }
+    TetCorners p;
+    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+    const std::vector<int> meeting = em.cut->triangles_meeting(p);
+    const CutPieces pieces = em.cut_class[t] == 2 ? split_by_cut(p, *em.cut, meeting)
+                                                  : split_at_front(p, *em.cut, meeting, front);
+    out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
+    out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
     out.first.push_back(static_cast<int>(out.tets.size()));
   }
   return out;
@@ -304,19 +276,35 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 }
 
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
-                                 Eigen::MatrixXd& k) {
+                                 Eigen::MatrixXd& k, int consistent_order) {
   // As element_stiffness: S = G^T G, row q of G the basis gradients at point q times sqrt(weight).
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
-  Eigen::MatrixXd G(q, 3 * n);
+  Eigen::MatrixXd gradients(q, 3 * n);
   BasisAt b;
   for (int p = 0; p < q; ++p) {
     enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
-    const double s = std::sqrt(rule.weights[p]);
     for (int c = 0; c < n; ++c)
-      for (int a = 0; a < 3; ++a) G(p, 3 * c + a) = s * b.dN(c, a);
+      for (int a = 0; a < 3; ++a) gradients(p, 3 * c + a) = b.dN(c, a);
   }
-  stiffness_from_gradients(G, material, k);
+  // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
+  // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
+  bool branch = false;
+  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  if (consistent_order > 0 && branch && q > 0) {
+    const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_order);
+    const double volume = w.sum();
+    for (int c = 0; c < n; ++c) {
+      if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;
+      for (int a = 0; a < 3; ++a) {
+        const double shift = (exact(c, a) - w.dot(gradients.col(3 * c + a))) / volume;
+        gradients.col(3 * c + a).array() += shift;
+      }
+    }
+  }
+  for (int p = 0; p < q; ++p) gradients.row(p) *= std::sqrt(rule.weights[p]);
+  stiffness_from_gradients(gradients, material, k);
 }
 
 }  // namespace xfem

@@ -17,13 +17,16 @@ namespace xfem {
 /// point to thin slivers cut off a tet, and integrates the 1/r singular stiffness of the crack-tip
 /// functions only to ~1e-3 (docs/VERIFICATION.md). This rule
 ///   1. splits every cut element along the cut into sub-tets of one side each (split_cut_elements:
-///      exact for a cut planar inside the element with a straight front; sub-tets next to the front
-///      have an edge or a vertex on it), so H and theta are evaluated with the sub-tet's own side;
+///      exact for a piecewise planar cut and a polygonal front; sub-tets next to the front have an
+///      edge or a vertex on it), so H and theta are evaluated with the sub-tet's own side;
 ///   2. integrates every sub-tet (and every uncut enriched tet as one) with a collapsed Gauss
 ///      tensor rule whose collapse sits on the front: on an edge lying on the front an edge-Duffy
 ///      map, on a vertex lying on the front a vertex-Duffy map, each with the radial variable
 ///      s = sigma^2, which makes r^(-1/2), r^(-1) (times the Jacobian) and sqrt(r) smooth in the
-///      parameters: exponential convergence in the order n instead of O(h_sub).
+///      parameters: exponential convergence in the order n instead of O(h_sub);
+///   3. shifts the branch functions' sampled gradients per element so that their integrals are
+///      exact in the sense of the divergence theorem (consistent_gradients.h): the linear patch
+///      test with a front inside the body holds to round-off.
 
 /// Integration points in physical space with absolute weights (m^3) and the side (+1 / -1, or 0 =
 /// "decide by the cut surface") with which the enriched basis is to be evaluated at each.
@@ -72,31 +75,29 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
                      PointRule& out);
 
 /// The cut elements of a mesh split along the cut into pieces of one side each, once for all
-/// elements. Completely cut elements (cut_class 2) are split at the points where the cut crosses
-/// their edges between nodes of opposite sides (array `side`): the marching-tetrahedra pieces, a
-/// tet and a prism or two prisms, 4 or 6 tets, exact for a cut that is planar inside the element,
-/// however thin a piece. Partially cut elements (cut_class 1) are split by split_mesh
-/// (element_split.h), which fans them from a point M on the front: sub-tets then have an edge or a
-/// vertex on the front, side 0 ahead of it (M is moved off the front when it would lie within
-/// 1e-3 of a face in barycentric terms, and the split is then no longer exact there).
+/// elements, by cut_pieces.h: completely cut elements (cut_class 2) by split_by_cut, partially cut
+/// ones (cut_class 1) by split_at_front (also at the planes through the front segments, so that
+/// the front is made of the pieces' edges). Exact for a piecewise planar cut, however thin a piece.
 struct CutElementSplits {
   std::vector<std::array<Eigen::Vector3d, 4>> tets;  ///< corners (m) of every piece
-  std::vector<int> side;   ///< per piece: +1 / -1, 0 ahead of the front
+  std::vector<int> side;   ///< per piece: +1 / -1 (ahead of the front: its half of the cut's plane)
   std::vector<int> index;  ///< per mesh tet: its row in `first`, -1 for uncut tets
   std::vector<int> first;  ///< CSR: pieces first[i] .. first[i+1]-1
 };
-/// Throws xfem::Error (from split_mesh) when em's sides are not +-1, and when em has cut elements
-/// but no cut surface.
+/// Throws xfem::Error when em has cut elements but no cut surface.
 CutElementSplits split_cut_elements(const EnrichedMesh& em);
 
-/// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side, 0 ahead
-/// of the front), or the tet itself for an uncut one (side 0), each by append_tet_rule with order n.
+/// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side), or the
+/// tet itself for an uncut one (side 0), each by append_tet_rule with order n.
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out);
 
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as
-/// element_stiffness of element_stiffness.h.
+/// element_stiffness of element_stiffness.h. With consistent_order > 0 the branch functions'
+/// gradients are first shifted per element so that the rule integrates them exactly as the
+/// divergence theorem does (branch_gradient_integrals, consistent_gradients.h, with that many
+/// Gauss points per direction on the faces): the linear patch test then holds to round-off.
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
-                                 Eigen::MatrixXd& k);
+                                 Eigen::MatrixXd& k, int consistent_order = 0);
 
 }  // namespace xfem

@@ -110,47 +110,106 @@ CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut) {
   return split_by_cut(p, cut, cut.triangles_meeting(p));
 }
 
-CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles) {
-  const double whole = volume(p);
+namespace {
+
+// The length of segment (a, b) inside the closed tet p, its ends allowed `tolerance` outside;
+// -1 if the segment misses p (0 if it only touches it).
+double length_inside(const TetCorners& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tolerance) {
+  static const int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d& x0 = p[kFaces[k][0]];
+    Eigen::Vector3d n = (p[kFaces[k][1]] - x0).cross(p[kFaces[k][2]] - x0);
+    const double norm = n.norm();
+    if (norm == 0.0) return -1.0;
+    n /= norm;
+    if (n.dot(p[k] - x0) < 0) n = -n;  // inward
+    const double da = n.dot(a - x0) + tolerance, db = n.dot(b - x0) + tolerance;
+    if (da < 0 && db < 0) return -1.0;
+    if (da < 0) lo = std::max(lo, da / (da - db));
+    if (db < 0) hi = std::min(hi, da / (da - db));
+  }
+  return hi >= lo ? (hi - lo) * (b - a).norm() : -1.0;
+}
+
+// Splits every piece the plane (point, normal) crosses for which `splits(piece)` holds.
+template <class Predicate>
+void split_pieces(std::vector<TetCorners>& pieces, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                  double tolerance, Predicate splits) {
+  std::vector<TetCorners> next, above, below;
+  for (const TetCorners& q : pieces) {
+    above.clear();
+    below.clear();
+    split_by_plane(q, point, normal, tolerance, above, below);
+    if (above.empty() || below.empty() || !splits(q)) {
+      next.push_back(q);
+      continue;
+    }
+    next.insert(next.end(), above.begin(), above.end());
+    next.insert(next.end(), below.begin(), below.end());
+  }
+  pieces.swap(next);
+  if (pieces.size() > 100000)
+    throw Error("splitting a tet along the cut: more than 100000 pieces (the cut has too many triangles inside one element)");
+}
+
+// The pieces of p split by the plane of every cut triangle that passes through their inside.
+std::vector<TetCorners> split_by_triangles(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles) {
   const double tolerance = 1e-12 * longest_edge(p);
   const double area_tolerance = 1e-10 * longest_edge(p) * longest_edge(p);
   const TriangleMesh& cm = cut.mesh();
-  std::vector<TetCorners> pieces{p}, next, above, below;
+  std::vector<TetCorners> pieces{p};
   for (const int f : triangles) {
-    const Eigen::Vector3d n = cut.unit_normal(f), c = cm.points.row(cm.triangles(f, 0)).transpose();
-    next.clear();
-    for (const TetCorners& q : pieces) {
-      above.clear();
-      below.clear();
-      split_by_plane(q, c, n, tolerance, above, below);
-      // Only a triangle that passes through the inside of the piece splits it (its plane may cross
-      // pieces the triangle misses, e.g. beyond a fold, or only touches along a face: a cut
-      // ending exactly on a face).
-      if (above.empty() || below.empty() ||
-          !(polygon_area(clip_triangle(q, cm.points.row(cm.triangles(f, 0)).transpose(),
-                                       cm.points.row(cm.triangles(f, 1)).transpose(),
-                                       cm.points.row(cm.triangles(f, 2)).transpose())) > area_tolerance)) {
-        next.push_back(q);
-        continue;
-      }
-      for (const auto& t : above) next.push_back(t);
-      for (const auto& t : below) next.push_back(t);
-    }
-    pieces.swap(next);
-    if (pieces.size() > 100000)
-      throw Error("splitting a tet along the cut: more than 100000 pieces (the cut has too many triangles inside one element)");
+    const Eigen::Vector3d a = cm.points.row(cm.triangles(f, 0)).transpose();
+    const Eigen::Vector3d b = cm.points.row(cm.triangles(f, 1)).transpose();
+    const Eigen::Vector3d c = cm.points.row(cm.triangles(f, 2)).transpose();
+    // Only a triangle that passes through the inside of the piece splits it (its plane may cross
+    // pieces the triangle misses, e.g. beyond a fold, or only touches along a face: a cut
+    // ending exactly on a face).
+    split_pieces(pieces, a, cut.unit_normal(f), tolerance,
+                 [&](const TetCorners& q) { return polygon_area(clip_triangle(q, a, b, c)) > area_tolerance; });
   }
+  return pieces;
+}
+
+// The pieces with their sides (CutSurface::side at the centroid, which lies strictly inside a
+// piece), dropping those of round-off volume.
+CutPieces sided(const std::vector<TetCorners>& pieces, const CutSurface& cut, double whole) {
   CutPieces out;
   for (const TetCorners& q : pieces) {
     const double v = volume(q);
     if (!(v > 1e-14 * whole)) continue;
-    const Eigen::Vector3d centroid = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-    const int s = cut.side(centroid);
+    const int s = cut.side(0.25 * (q[0] + q[1] + q[2] + q[3]));
     out.tets.push_back(q);
     out.side.push_back(s);
     (s > 0 ? out.volume_above : out.volume_below) += v;
   }
   return out;
+}
+
+}  // namespace
+
+CutPieces split_at_front(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles,
+                         const std::vector<FrontSegment>& front) {
+  const double whole = volume(p), h = longest_edge(p);
+  const double tolerance = 1e-12 * h;
+  std::vector<TetCorners> pieces = split_by_triangles(p, cut, triangles);
+  for (const FrontSegment& s : front) {
+    if (!(length_inside(p, s.p0, s.p1, tolerance) > 1e-9 * h)) continue;
+    const Eigen::Vector3d along = s.p1 - s.p0;
+    const Eigen::Vector3d normal = along.cross(s.b).normalized();
+    // Every piece the front meets, even at one point: a piece touching the cut along one edge
+    // would otherwise reach from behind the front to ahead of it.
+    split_pieces(pieces, s.p0, normal, tolerance,
+                 [&](const TetCorners& q) { return length_inside(q, s.p0, s.p1, tolerance) >= 0; });
+  }
+  return sided(pieces, cut, whole);
+}
+
+CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles) {
+  const double whole = volume(p);
+  const std::vector<TetCorners> pieces = split_by_triangles(p, cut, triangles);
+  return sided(pieces, cut, whole);
 }
 
 }  // namespace xfem

@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "xfem/crack_front.h"
 #include "xfem/cut_surface.h"
 
 namespace xfem {
@@ -39,6 +40,19 @@ CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut);
 /// The same, given `triangles`: the cut's triangles that meet p (CutSurface::triangles_meeting),
 /// for callers that need them too.
 CutPieces split_by_cut(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles);
+
+/// Splits a tet the cut's front passes through (a partially cut element) into exact pieces: by
+/// the plane of every cut triangle that passes through a piece's inside, as split_by_cut, and then
+/// by the plane through every front segment that meets the tet, spanned by the segment and its
+/// cut normal b (every piece the segment meets, even at a point, is split). Each piece then lies
+/// on one side of the cut's plane, and a piece with a face on the cut lies behind the front: the
+/// wound ends exactly at the front, which is made of the pieces' edges (where the front-singular
+/// rules of conforming_quadrature.h want it). Exact for a piecewise planar cut with a polygonal
+/// front, kinks inside the element included. Ahead of the front the side of a piece only names the
+/// half of the cut's plane extended it lies in (the material is whole there). `front` is the whole
+/// front; segments that miss the tet are skipped.
+CutPieces split_at_front(const TetCorners& p, const CutSurface& cut, const std::vector<int>& triangles,
+                         const std::vector<FrontSegment>& front);
 
 /// The pieces of tet p on either side of the plane through `point` with unit `normal` (side +1 on
 /// the normal's side), appended to `above` and `below`. Corners within `tolerance` of the plane count

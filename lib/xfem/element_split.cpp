@@ -318,19 +318,34 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (s.node(v[i]) - s.node(v[j])).norm());
 
-    // An element the cut separates but not in one plane (a fold inside it): its exact pieces
-    // (cut_pieces.h), the wound being the cut triangles clipped to it. Their points are its own.
-    if (cut_class[t] == 2 && (closed || !any_split)) {
+    // An element the front passes through, or one the cut separates but not in one plane (a fold
+    // inside it): its exact pieces (cut_pieces.h), the wound being the cut triangles clipped to it.
+    // Their points are its own.
+    const bool partial = cut_class[t] == 1;
+    if (partial || (cut_class[t] == 2 && (closed || !any_split))) {
       if (!cut_surface) cut_surface = std::make_unique<CutSurface>(cut);
       TetCorners corners;
       for (int c = 0; c < 4; ++c) corners[c] = s.node(v[c]);
       const std::vector<int> meeting = cut_surface->triangles_meeting(corners);
-      if (!planar_inside(*cut_surface, meeting, corners)) {
-        const CutPieces pieces = split_by_cut(corners, *cut_surface, meeting);
+      if (partial || !planar_inside(*cut_surface, meeting, corners)) {
+        const CutPieces pieces = partial ? split_at_front(corners, *cut_surface, meeting, front)
+                                         : split_by_cut(corners, *cut_surface, meeting);
         std::map<std::tuple<double, double, double, int>, int> ids;  // (position, side) -> output id
         auto id_of = [&](const Eigen::Vector3d& x, int sd) {
+          // In an element the front passes through, only points on the cut behind the front have
+          // a copy per side; elsewhere (the front, the cut's plane ahead of it, off the cut) the
+          // field is continuous and the pieces share one point.
+          if (partial && sd != 0) {
+            bool on_front = false;
+            for (const FrontSegment& f : front) {
+              const Eigen::Vector3d d = f.p1 - f.p0;
+              const double u = std::clamp((x - f.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
+              on_front = on_front || (f.p0 + u * d - x).norm() <= 1e-12 * parent_edge;
+            }
+            if (on_front || cut_surface->closest(x).distance > 1e-12 * parent_edge) sd = 0;
+          }
           for (int c = 0; c < 4; ++c)
-            if (side[v[c]] == sd && s.node(v[c]) == x) return v[c];
+            if ((side[v[c]] == sd || sd == 0) && s.node(v[c]) == x) return v[c];
           const auto key = std::make_tuple(x.x(), x.y(), x.z(), sd);
           const auto it = ids.find(key);
           if (it != ids.end()) return it->second;
@@ -364,7 +379,7 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
               out.wound_side.push_back(sd);
             }
         }
-        ++out.split_complete;
+        ++(partial ? out.split_partial : out.split_complete);
         continue;
       }
     }

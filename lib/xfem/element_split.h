@@ -18,21 +18,22 @@ namespace xfem {
 /// is entered by the cut front, and its point where a front segment pierces it (CGAL) ends the
 /// cut on that face. Every face is triangulated from its own edges' and front points only (quads
 /// split along the diagonal from their lowest-numbered node), so neighbouring elements agree and
-/// the result is conforming. Each cut element is then coned from one inner point M: for a cut
-/// that crosses the element completely (every edge between nodes of opposite sides is split) M is
-/// the mean of the edge points and is duplicated like them; otherwise M is the mean of the front
-/// points (on the front), shared by both sides, so the element opens only behind the front. The
-/// cut inside an element is thus the fan from M over the cut's segments on the element's faces:
-/// exact for a planar cut with a straight front, a piecewise planar approximation through the
-/// edge points for a curved cut (cut vertices inside an element are not resolved).
+/// the result is conforming. An element the cut crosses completely and in one plane is then
+/// coned from one inner point M, the mean of the edge points, duplicated like them: the cut inside
+/// it is the fan from M over the cut's segments on its faces. Elements the front runs through,
+/// and elements a folded cut crosses, are split instead into their exact pieces (cut_pieces.h),
+/// the wound being the cut's triangles clipped to them; their points are their own (faces match
+/// the neighbours' in space, not point by point), and only points on the cut behind the front
+/// have a copy per side, so such an element opens exactly behind its front.
 struct SplitMesh {
   Points points;                 ///< #P x 3 undeformed positions (m); rows 0..NP-1 are the input's nodes
   std::vector<int> point_side;   ///< #P: side to evaluate the displacement with (+1 / -1, 0 = decide by the cut)
   std::vector<int> point_tet;    ///< #P: an input tet containing the point, to evaluate the field in
   Tets tets;                     ///< #T' x 4, positively oriented
   std::vector<int> parent;       ///< #T': the input tet each output tet lies in
-  std::vector<int> tet_side;     ///< #T': +1 / -1 for a piece above / below the cut; 0 for an
-                                 ///< element kept whole and for the joined part ahead of the front
+  std::vector<int> tet_side;     ///< #T': +1 / -1 for a piece above / below the cut (ahead of the
+                                 ///< front: the half of the cut's plane it lies in); 0 for an
+                                 ///< element kept whole
   Triangles wound;               ///< the cut's faces inside the body: every cut triangle twice, once
                                  ///< per side, oriented with the normal pointing out of its side's piece
   std::vector<int> wound_side;   ///< per wound triangle: +1 / -1

@@ -23,7 +23,7 @@ set -u
 # the branch functions' integrals are Gauss-approximated; the wound of partially cut tets follows
 # that fan). Every case that cuts the body through passes every check.
 # CATALOGUE_KNOWN_FAIL="" runs every case as a real test.
-KNOWN_FAIL="${CATALOGUE_KNOWN_FAIL-s-disc u-disc s-face-end u-face-end}"
+KNOWN_FAIL="${CATALOGUE_KNOWN_FAIL-}"
 KNOWN_FAIL=$(echo $KNOWN_FAIL)
 S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
 B=$XFEM_BIN; PY="python3 $XFEM_SOURCE/test/e2e/cut_catalogue.py"

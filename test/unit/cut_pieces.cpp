@@ -151,3 +151,54 @@ TEST_CASE("cut pieces: a cut through a corner or along a face leaves the tet who
   REQUIRE(at_corner.tets.size() == 1);
   CHECK(at_corner.side[0] == -1);
 }
+
+TEST_CASE("cut pieces: a front with a kink inside the tet ends the pieces' faces on the cut exactly", "[cut_pieces]") {
+  // The plane z = 0 cut for x <= f(y) = 0.2 + 0.5 |y| (a reflex corner of the cut at (0.2, 0, 0),
+  // inside the tet): three triangles, the front two segments through the kink.
+  const auto f = [](double y) { return 0.2 + 0.5 * std::abs(y); };
+  xfem::TriangleMesh m;
+  m.points.resize(5, 3);
+  m.points << -5, -5, 0, f(-5), -5, 0, 0.2, 0, 0, f(5), 5, 0, -5, 5, 0;
+  m.triangles.resize(3, 3);
+  m.triangles << 0, 1, 2, 0, 2, 4, 4, 2, 3;
+  const xfem::CutSurface cut(m);
+  const std::vector<xfem::FrontSegment> front = {{V3(f(-5), -5, 0), V3(0.2, 0, 0), V3(0, 0, 1)},
+                                                 {V3(0.2, 0, 0), V3(f(5), 5, 0), V3(0, 0, 1)}};
+  const TetCorners tet = {V3(-1, -1, -1), V3(2, -1, -0.8), V3(-0.7, 2, -1), V3(0.1, 0.2, 1.5)};
+  const xfem::CutPieces pieces = xfem::split_at_front(tet, cut, cut.triangles_meeting(tet), front);
+  CHECK(volume(pieces.tets) == Approx(std::abs(xfem::signed_volume(tet[0], tet[1], tet[2], tet[3]))).epsilon(1e-12));
+  // Each piece lies on one side of z = 0; a face on the plane is behind the front or ahead of it,
+  // and the faces behind it, seen from above, make up the cut inside the tet.
+  double behind_area = 0, cut_area = 0;
+  bool kink_is_corner = false;
+  for (std::size_t i = 0; i < pieces.tets.size(); ++i) {
+    const TetCorners& q = pieces.tets[i];
+    std::vector<V3> on;
+    double zlo = 0, zhi = 0;
+    for (const V3& x : q) {
+      zlo = std::min(zlo, x.z());
+      zhi = std::max(zhi, x.z());
+      if (std::abs(x.z()) <= 1e-14) on.push_back(x);
+      kink_is_corner = kink_is_corner || (x - V3(0.2, 0, 0)).norm() <= 1e-14;
+    }
+    CHECK((zlo >= -1e-14 || zhi <= 1e-14));
+    CHECK(pieces.side[i] == (zhi > 1e-14 ? 1 : -1));
+    if (on.size() != 3) continue;
+    double behind = 0, ahead = 0;
+    for (const V3& x : on) {
+      behind = std::max(behind, f(x.y()) - x.x());
+      ahead = std::max(ahead, x.x() - f(x.y()));
+    }
+    CHECK(std::min(behind, ahead) <= 1e-14);
+    const V3 centre = (on[0] + on[1] + on[2]) / 3;  // strictly inside the face: behind or ahead
+    if (pieces.side[i] > 0 && centre.x() < f(centre.y()))
+      behind_area += 0.5 * (on[1] - on[0]).cross(on[2] - on[0]).norm();
+  }
+  for (int t = 0; t < 3; ++t)
+    cut_area += xfem::polygon_area(xfem::clip_triangle(tet, m.points.row(m.triangles(t, 0)).transpose(),
+                                                       m.points.row(m.triangles(t, 1)).transpose(),
+                                                       m.points.row(m.triangles(t, 2)).transpose()));
+  CHECK(cut_area > 0.1);
+  CHECK(behind_area == Approx(cut_area).epsilon(1e-12));
+  CHECK(kink_is_corner);
+}

@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/consistent_gradients.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "xfem/branch_functions.h"
+#include "xfem/conforming_quadrature.h"
+#include "xfem/cut_pieces.h"
+#include "xfem/tet_shape.h"
+
+namespace xfem {
+namespace {
+
+using Polygon = std::vector<Eigen::Vector3d>;
+
+// Sutherland-Hodgman: the parts of the convex polygon on either side of the plane (point, normal).
+void split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
+                   Polygon& above, Polygon& below) {
+  above.clear();
+  below.clear();
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& u = poly[i];
+    const Eigen::Vector3d& v = poly[(i + 1) % n];
+    double du = normal.dot(u - point), dv = normal.dot(v - point);
+    if (std::abs(du) <= tolerance) du = 0;
+    if (std::abs(dv) <= tolerance) dv = 0;
+    if (du >= 0) above.push_back(u);
+    if (du <= 0) below.push_back(u);
+    if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) {
+      const Eigen::Vector3d x = u + du / (du - dv) * (v - u);
+      above.push_back(x);
+      below.push_back(x);
+    }
+  }
+}
+
+// Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
+// -1 if it misses the polygon.
+double length_in_polygon(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Polygon& poly,
+                         const Eigen::Vector3d& normal) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& x : poly) centre += x;
+  centre /= static_cast<double>(poly.size());
+  double lo = 0.0, hi = 1.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector3d& a = poly[i];
+    Eigen::Vector3d m = normal.cross(poly[(i + 1) % poly.size()] - a);
+    if (m.dot(centre - a) < 0) m = -m;  // inward, in the polygon's plane
+    const double dp = m.dot(p - a), dq = m.dot(q - a);
+    if (dp < 0 && dq < 0) return -1.0;
+    if (dp < 0) lo = std::max(lo, dp / (dp - dq));
+    if (dq < 0) hi = std::min(hi, dp / (dp - dq));
+  }
+  return hi >= lo ? (hi - lo) * (q - p).norm() : -1.0;
+}
+
+// The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
+bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                      double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
+  const TriangleMesh& cm = cut.mesh();
+  std::array<Eigen::Vector3d, 3> v;
+  std::array<double, 3> d;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = cm.points.row(cm.triangles(f, k)).transpose();
+    d[k] = normal.dot(v[k] - point);
+    if (std::abs(d[k]) <= tolerance) d[k] = 0;
+  }
+  std::vector<Eigen::Vector3d> ends;
+  for (int k = 0; k < 3; ++k) {
+    const int l = (k + 1) % 3;
+    if (d[k] == 0) ends.push_back(v[k]);
+    if ((d[k] > 0 && d[l] < 0) || (d[k] < 0 && d[l] > 0)) ends.push_back(v[k] + d[k] / (d[k] - d[l]) * (v[l] - v[k]));
+  }
+  if (ends.size() != 2) return false;  // missing the plane, touching it at a corner, or lying in it
+  p = ends[0];
+  q = ends[1];
+  return true;
+}
+
+double distance_to_segment(const Eigen::Vector3d& x, const FrontSegment& f) {
+  const Eigen::Vector3d d = f.p1 - f.p0;
+  const double u = std::clamp((x - f.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (f.p0 + u * d - x).norm();
+}
+
+// The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
+// into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
+// segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
+void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eigen::Vector3d& C, int depth,
+                   const std::vector<const FrontSegment*>& fronts, const std::vector<double>& nodes,
+                   const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x, std::vector<double>& w) {
+  const double area2 = (B - A).cross(C - A).norm();
+  if (!(area2 > 0.0)) return;
+  if (depth > 0) {
+    const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+    const Eigen::Vector3d centre = (A + B + C) / 3;
+    bool near = false;
+    for (const FrontSegment* f : fronts) near = near || distance_to_segment(centre, *f) < size;
+    if (near) {
+      const Eigen::Vector3d ab = (A + B) / 2, bc = (B + C) / 2, ca = (C + A) / 2;
+      triangle_rule(A, ab, ca, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, B, bc, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ca, bc, C, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, bc, ca, depth - 1, fronts, nodes, weights, x, w);
+      return;
+    }
+  }
+  for (std::size_t i1 = 0; i1 < nodes.size(); ++i1)
+    for (std::size_t i2 = 0; i2 < nodes.size(); ++i2) {
+      const double s = nodes[i1], t = nodes[i2];
+      x.push_back(A + s * (B - A) + s * t * (C - B));
+      w.push_back(weights[i1] * weights[i2] * area2 * s);
+    }
+}
+
+// Gauss points of the convex polygon, fanned from `apex` (a corner, or a point inside it) over its
+// edges, each triangle by triangle_rule with the collapse at the apex. Positions and weights (m^2).
+void polygon_rule(const Polygon& poly, const Eigen::Vector3d& apex, int depth, const std::vector<const FrontSegment*>& fronts,
+                  const std::vector<double>& nodes, const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x,
+                  std::vector<double>& w) {
+  x.clear();
+  w.clear();
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    triangle_rule(apex, poly[i], poly[(i + 1) % poly.size()], depth, fronts, nodes, weights, x, w);
+}
+
+// Where the integrand is singular in the polygon: a front segment piercing its inside (that
+// point), else a corner on the front (the first found), else its first corner.
+Eigen::Vector3d fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, const std::vector<const FrontSegment*>& fronts,
+                         double tolerance) {
+  for (const FrontSegment* f : fronts) {
+    const double d0 = normal.dot(f->p0 - poly[0]), d1 = normal.dot(f->p1 - poly[0]);
+    if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance) || d0 == d1) continue;
+    if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) continue;  // lying in the plane
+    const Eigen::Vector3d p = f->p0 + d0 / (d0 - d1) * (f->p1 - f->p0);
+    if (length_in_polygon(p, p, poly, normal) >= 0) return p;
+  }
+  for (const Eigen::Vector3d& v : poly)
+    for (const FrontSegment* f : fronts)
+      if (distance_to_segment(v, *f) <= tolerance) return v;
+  return poly[0];
+}
+
+}  // namespace
+
+Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order) {
+  const int n = em.size(t);
+  const long begin = em.offsets[t];
+  Eigen::Matrix<double, Eigen::Dynamic, 3> out = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
+  // The branch entries of C: (row, local node, function).
+  struct Entry {
+    int row, local, function;
+  };
+  std::vector<Entry> entries;
+  for (int k = 0; k < n; ++k)
+    if (em.dofs[begin + k] >= em.np + em.ns)
+      entries.push_back({k, em.local[begin + k], static_cast<int>((em.dofs[begin + k] - em.np - em.ns) % 4)});
+  if (entries.empty()) return out;
+
+  std::vector<double> nodes, weights;
+  gauss_legendre_01(order, nodes, weights);
+  // Subdivision near the front pays only for accurate rules (as the volume rule's bisection).
+  const int depth = std::max(0, order - 3);
+  std::array<Eigen::Vector3d, 4> corner;
+  std::array<long, 4> id;
+  for (int c = 0; c < 4; ++c) {
+    id[c] = em.mesh.tets(t, c);
+    corner[c] = em.mesh.points.row(id[c]).transpose();
+  }
+  double h = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) h = std::max(h, (corner[i] - corner[j]).norm());
+  const double tolerance = 1e-12 * h;
+  const std::vector<int> meeting = em.cut ? em.cut->triangles_meeting(corner) : std::vector<int>();
+  // The front segments near the tet (its bounding box, grown by the tolerance).
+  Eigen::Vector3d lo = corner[0], hi = corner[0];
+  for (const auto& x : corner) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::vector<const FrontSegment*> fronts;
+  for (const FrontSegment& segment : em.front.segments())
+    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
+        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
+      fronts.push_back(&segment);
+
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> w;
+  // 1. The four faces. Face k is opposite corner k; its corners in global node order make its
+  // points and splits the same from both tets that share it.
+  for (int k = 0; k < 4; ++k) {
+    std::array<int, 3> f;
+    for (int c = 0, m = 0; c < 4; ++c)
+      if (c != k) f[m++] = c;
+    std::sort(f.begin(), f.end(), [&](int a, int b) { return id[a] < id[b]; });
+    bool needed = false;  // N_l vanishes on the faces without node l
+    for (const Entry& e : entries) needed = needed || e.local != k;
+    if (!needed) continue;
+    const Eigen::Vector3d &A = corner[f[0]], &B = corner[f[1]], &C = corner[f[2]];
+    // Tolerances of the face's own size: both tets decide alike.
+    const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+    const double face_tolerance = 1e-12 * face_h;
+    Eigen::Vector3d normal = (B - A).cross(C - A);
+    const double area2 = normal.norm();
+    if (area2 == 0.0) continue;
+    normal /= area2;
+    Eigen::Vector3d outward = normal.dot(A - corner[k]) > 0 ? normal : Eigen::Vector3d(-normal);
+    // The face split along the cut's trace: by every cut triangle crossing a part's inside.
+    std::vector<Polygon> parts{{A, B, C}}, next;
+    Polygon above, below;
+    for (const int tri : meeting) {
+      Eigen::Vector3d p, q;
+      if (!crossing_segment(*em.cut, tri, A, normal, face_tolerance, p, q)) continue;
+      const Eigen::Vector3d cut_normal = em.cut->unit_normal(tri);
+      const Eigen::Vector3d cut_point = em.cut->mesh().points.row(em.cut->mesh().triangles(tri, 0)).transpose();
+      next.clear();
+      for (const Polygon& part : parts) {
+        split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
+        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
+          next.push_back(above);
+          next.push_back(below);
+        } else {
+          next.push_back(part);
+        }
+      }
+      parts.swap(next);
+    }
+    // The front segments near the face: its own bounding box, so that both tets see the same.
+    std::vector<const FrontSegment*> face_fronts;
+    const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
+    for (const FrontSegment* segment : fronts)
+      if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
+          (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
+        face_fronts.push_back(segment);
+    // A front lying in the face's plane splits it too: the cut covers the face on one side of the
+    // front only (there each tet sees its own side's F), and F ~ sqrt(r) is smooth on either side.
+    for (const FrontSegment* segment : face_fronts) {
+      if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
+      const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
+      next.clear();
+      for (const Polygon& part : parts) {
+        split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
+        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
+          next.push_back(above);
+          next.push_back(below);
+        } else {
+          next.push_back(part);
+        }
+      }
+      parts.swap(next);
+    }
+    // Barycentric coordinates on the face, for N_l (exactly the same from both tets).
+    Eigen::Matrix<double, 3, 2> J;
+    J << B - A, C - A;
+    const Eigen::Matrix2d JtJ = J.transpose() * J;
+    for (const Polygon& part : parts) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& v : part) centre += v;
+      centre /= static_cast<double>(part.size());
+      // The side whose F this part sees: its own, or for a part lying on the cut, the tet's.
+      int side = 0;
+      if (em.cut) {
+        const CutSurface::Closest near = em.cut->closest(centre);
+        side = near.distance <= face_tolerance ? (em.cut->unit_normal(near.triangle).dot(-outward) > 0 ? 1 : -1)
+                                          : em.cut->side(centre);
+      }
+      polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const Eigen::Vector2d bc = JtJ.ldlt().solve(J.transpose() * (x[i] - A));
+        const std::array<double, 3> lambda = {1.0 - bc[0] - bc[1], bc[0], bc[1]};
+        const BranchValues F = branch_functions(em.front.coordinates(x[i]), side);
+        for (const Entry& e : entries) {
+          if (e.local == k) continue;
+          const double N = lambda[std::find(f.begin(), f.end(), e.local) - f.begin()];
+          out.row(e.row) += (w[i] * N * F.F[e.function]) * outward.transpose();
+        }
+      }
+    }
+  }
+  // 2. The cut inside the tet: the jump of F across it (a cut lying on a face was taken there).
+  if (em.cut) {
+    const TetShape shape = tet_shape(em.mesh, t);
+    const TriangleMesh& cm = em.cut->mesh();
+    for (const int tri : meeting) {
+      const Polygon poly = clip_triangle(corner, cm.points.row(cm.triangles(tri, 0)).transpose(),
+                                         cm.points.row(cm.triangles(tri, 1)).transpose(),
+                                         cm.points.row(cm.triangles(tri, 2)).transpose());
+      if (!(polygon_area(poly) > 1e-10 * h * h)) continue;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& v : poly) centre += v;
+      centre /= static_cast<double>(poly.size());
+      bool on_face = false;
+      for (int k = 0; k < 4; ++k) {
+        const Eigen::Vector3d& a = corner[(k + 1) % 4];
+        const Eigen::Vector3d nf = (corner[(k + 2) % 4] - a).cross(corner[(k + 3) % 4] - a).normalized();
+        on_face = on_face || std::abs(nf.dot(centre - a)) <= tolerance;
+      }
+      if (on_face) continue;
+      const Eigen::Vector3d cut_normal = em.cut->unit_normal(tri);
+      polygon_rule(poly, fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const TipCoordinates tc = em.front.coordinates(x[i]);
+        const BranchValues below = branch_functions(tc, -1), above = branch_functions(tc, 1);
+        const Eigen::Vector4d N = shape.values(x[i]);
+        for (const Entry& e : entries)
+          out.row(e.row) += (w[i] * N[e.local] * (below.F[e.function] - above.F[e.function])) * cut_normal.transpose();
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace xfem

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Dense>
+
+#include "xfem/enriched_mesh.h"
+
+namespace xfem {
+
+/// The integrals over tet t of the (regular) gradients of its branch basis functions N_l F_j,
+/// by the divergence theorem: over the tet's four faces and the cut inside it,
+///   integral_T grad(N_l F_j) = sum over faces f  integral_f N_l F_j n_f
+///                             + integral_(cut in T) N_l (F_j below - F_j above) n_cut,
+/// n_f the face's outer normal, n_cut the cut's normal (pointing to side +1).
+///
+/// Why: the Gauss rules of the branch functions (conforming_quadrature.h) integrate grad F, which
+/// is singular like r^(-1/2) at the front, only approximately, so a linear field that the X-FEM
+/// space contains exactly is reproduced only to ~1e-5 (the patch test fails). Shifting each branch
+/// function's sampled gradient by a constant per element so that its integral is these values
+/// (variationally consistent integration, Chen, Hillman and Rueter 2013) restores the patch test
+/// to round-off: each face integral depends on the face alone (its points are made from the face's
+/// corners in global node order, the face split along the cut's trace by the cut triangles that
+/// cross it), so the two tets sharing a face cancel exactly, and the cut's term vanishes against a
+/// stress with no traction on the cut. The integrands are bounded (F ~ sqrt(r)), so these
+/// integrals are also more accurate than the volume rule's.
+///
+/// Returns |C| x 3 (rows in the order of the tet's C); rows of DOFs other than branch DOFs are 0.
+/// `order`: Gauss points per direction on each face triangle (order^2 points per triangle).
+Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order);
+
+}  // namespace xfem
