@@ -84,5 +84,18 @@ fi
 # An incomplete directory (no system.json: an interrupted xfem-assemble) is refused.
 rm -rf "$S/partial"; cp -r "$S/sys" "$S/partial"; rm "$S/partial/system.json"
 expect_error "xfem-solve: error: $S/partial: no system.json" "$S/partial"
+# Start-up: the tools link neither PETSc/MPI nor gmsh (loaded only when used); the PETSc backend is
+# xfem-solve-petsc next to xfem-solve, and without it --backend petsc is one error line.
+if command -v readelf >/dev/null; then
+  for t in xfem-solve xfem-classify xfem-enrich xfem-assemble xfem-visualize xfem-mesh; do
+    libs=$(readelf -d "$B/$t" | grep NEEDED | grep -E 'petsc|libmpi|gmsh')
+    [ -z "$libs" ] || fail "$t links what it should load only when used: $libs"
+  done
+fi
+if "$SOLVE" --version | grep -q petsc; then
+  mkdir -p "$S/lone" && cp "$SOLVE" "$S/lone/"
+  SOLVE=$S/lone/xfem-solve expect_error "xfem-solve-petsc, which is missing" "$S/sys" --backend petsc
+  SOLVE=$S/lone/xfem-solve expect_error "xfem-solve-petsc, which is missing" "$S/sys" --np 2
+fi
 rm -rf "$S"
 echo "solve_binary e2e: ok"
