@@ -320,6 +320,7 @@ int main(int argc, char** argv) {
            g(c.solve_seconds) + " s");
       report["ordering"] = c.ordering;
       report["factor_nonzeros"] = static_cast<long>(c.factor_nonzeros);
+      report["factor_flops"] = c.flops;
       report["rcond_estimate"] = c.rcond;
       report["setup_seconds"] = c.analyze_seconds + c.factor_seconds;
       report["solve_seconds"] = c.solve_seconds;
