@@ -182,7 +182,7 @@ def run_case(r, case, runs, cache, ref):
         ref = {"enriched": os.path.join(cwd, "enriched.vtu"), "u": os.path.join(cwd, "u.mtx")}
     cmds = stage_commands(case, r, ref)
     res = {"name": case["name"], "label": case["label"], "mesh_cmd": case["mesh_cmd"], "stages": {},
-           "mesh": mesh_time, "scale": case.get("scale", False), "cut": case["cut"]}
+           "mesh": mesh_time, "scale": case.get("scale", False), "extra": case.get("extra", False), "cut": case["cut"]}
     for stage in case.get("stages", STAGES):
         cmd, inputs, outputs = cmds[stage]
         walls, rsss, extra = [], [], []
@@ -509,6 +509,8 @@ def main():
     ap.add_argument("--quick", action="store_true", help="one run per stage and floor (--runs 1 --large-runs 1): "
                     "single runs, for a shared machine")
     ap.add_argument("--no-write", action="store_true", help="print the tables instead of writing docs/PERFORMANCE.md")
+    ap.add_argument("--from-results", action="store_true", help="no runs: the tables from bench/out/results.json "
+                    "of the last run (with the same --runs / --quick)")
     args = ap.parse_args()
     if args.quick:
         args.runs, args.large_runs = 1, 1
@@ -549,16 +551,20 @@ def main():
     if args.only_scale:
         cases = [c for c in cases if c.get("scale")]
     results, ref = [], None
+    if args.from_results:  # the tables again from a finished run's measurements
+        saved = json.load(open(os.path.join(work, "results.json")))
+        mach, results = saved["machine"], saved["cases"]
+        cases = []
     for case in cases:
         log("case %s" % case["name"])
         res, got = run_case(r, case, args.runs, cache, ref)
         if case["name"] == "reference":
             ref = got
         results.append(res)
+        with open(os.path.join(work, "results.json"), "w") as f:  # after every case: nothing measured is lost
+            json.dump({"machine": mach, "cases": results}, f, indent=1)
     block = report(results, mach, args.runs, args)
     log("done in %.0f s" % (time.time() - start))
-    with open(os.path.join(work, "results.json"), "w") as f:
-        json.dump({"machine": mach, "cases": results}, f, indent=1)
     if args.no_write:
         print(block)
     else:
