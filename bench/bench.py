@@ -445,8 +445,8 @@ def report(cases, mach, runs, args):
             L.append("| %s | %s | %.2f | %s |" % (s, f, q, "yes" if q <= 2 else "no (see \"Why not at the floor\")"))
         L.append("")
     for kind in ("reference", "beam"):
-        pair = [c for c in cases + scale if (c["name"] == "reference") == (kind == "reference") and
-                (c["name"] == "reference" or c.get("scale") or c is largest)]
+        pair = ([c for c in cases + scale if c["name"] in ("reference", "reference-1M")] if kind == "reference" else
+                [c for c in cases + scale if c is largest or c["name"] == "beam-1M"])
         if len(pair) == 2 and any(c.get("scale") for c in pair):
             L.append("### Growth to the scale case (%s)" % " -> ".join(c["label"] for c in pair))
             L.append("")
@@ -459,7 +459,9 @@ def report(cases, mach, runs, args):
     L.append("### Commands")
     L.append("")
     L.append("```")
-    L.append("make -f Makefile.examples bench          # = python3 bench/bench.py --build build --runs %d --large-runs %d" % (runs, args.large_runs))
+    L.append("make -f Makefile.examples bench BENCH_ARGS=\"%s\"   # this run: %d run(s) per stage, %d for the largest beam "
+             "and the reference" % (" ".join(a for a in sys.argv[1:] if a not in ("--build", "build", "--from-results")
+                                             and not a.startswith("/")), runs, args.large_runs))
     L.append("# per case, in bench/out/<case>/ (P = pipelines/beam/problem.json; the reference case has no --cut):")
     L.append("xfem-classify -q mesh.vtu --cut cut.vtp -o classified.vtu --summary counts.json")
     L.append("xfem-enrich -q classified.vtu -o enriched.vtu")
