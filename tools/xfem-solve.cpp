@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
       "Writes the full solution (3N values in metres: original, sign and branch DOFs; constrained DOFs at their\n"
       "values) and reports the reaction force (N) and moment (N m, about the origin) of each Dirichlet condition.\n"
       "The backend is chosen from the system unless given: CHOLMOD (direct) for small systems, PETSc CG + GAMG\n"
-      "for large ones, started on several MPI processes by itself (mpirun; --np) when the system is large.",
+      "for large ones, started on several MPI processes by itself (mpirun; --np) when the system is large. The PETSc\n"
+      "backend is the program xfem-solve-petsc next to this one (PETSc and MPI are loaded only when it runs).",
       "xfem-solve out/system -o out/u.mtx --report out/solve.json\n"
       "  xfem-solve out/system -o out/u.mtx --backend petsc --np 2 --rtol 1e-8");
   std::string dir, output, report_path, reactions_path, backend = "auto", ordering = "metis", near_null = "rigid",
