@@ -14,7 +14,8 @@ Meshes are generated once into bench/out/cache (mesh generation is not a benchma
 Everything between the markers <!-- bench:begin --> and <!-- bench:end --> of docs/PERFORMANCE.md
 is replaced; the rest of the file is left as it is.
 
-Usage: bench/bench.py [--build DIR] [--runs N] [--large-runs N] [--sizes H1 H2 H3] [--no-write]
+Also the organ example (pipelines/organ without its PNG) at two sizes, whole pipeline.
+Usage: bench/bench.py [--build DIR] [--runs N] [--large-runs N] [--sizes H1 H2 H3] [--quick] [--scale] [--no-write]
 """
 import argparse
 import json
@@ -133,7 +134,7 @@ def mpirun(processes):
 
 def stage_commands(case, r, ref):
     """stage -> (command, inputs, outputs); paths relative to the case's work dir."""
-    problem = os.path.join(ROOT, "pipelines", "beam", "problem.json")
+    problem = case.get("problem", os.path.join(ROOT, "pipelines", "beam", "problem.json"))
     cut = ["--cut", "cut.vtp"] if case["cut"] else []
     cmds = {
         "classify": ([r.tool("xfem-classify"), "-q", "mesh.vtu"] + cut + ["-o", "classified.vtu", "--summary", "counts.json"],
@@ -172,15 +173,16 @@ def run_case(r, case, runs, cache, ref):
     os.makedirs(cwd)
     mesh_path, mesh_time = ensure_mesh(r, cache, case)
     shutil.copy(mesh_path, os.path.join(cwd, "mesh.vtu"))
-    cut_cache = os.path.join(cache, "cut.vtp")
+    cut_cmd = case.get("cut_cmd", ["cut-rect", "--beam-cut"])
+    cut_cache = os.path.join(cache, case.get("cut_file", "cut.vtp"))
     if not os.path.exists(cut_cache):
-        subprocess.run([r.tool("xfem-mesh"), "-q", "cut-rect", "--beam-cut", "-o", cut_cache], check=True)
+        subprocess.run([r.tool("xfem-mesh"), "-q"] + cut_cmd + ["-o", cut_cache], check=True)
     shutil.copy(cut_cache, os.path.join(cwd, "cut.vtp"))
     if ref is None:  # the reference case compares with itself (plain mesh mode of xfem-rmserror)
         ref = {"enriched": os.path.join(cwd, "enriched.vtu"), "u": os.path.join(cwd, "u.mtx")}
     cmds = stage_commands(case, r, ref)
     res = {"name": case["name"], "label": case["label"], "mesh_cmd": case["mesh_cmd"], "stages": {},
-           "mesh": mesh_time, "scale": case.get("scale", False), "cut": case["cut"]}
+           "mesh": mesh_time, "scale": case.get("scale", False), "extra": case.get("extra", False), "cut": case["cut"]}
     for stage in case.get("stages", STAGES):
         cmd, inputs, outputs = cmds[stage]
         walls, rsss, extra = [], [], []
@@ -230,7 +232,8 @@ def run_case(r, case, runs, cache, ref):
             sysj = json.load(open(os.path.join(cwd, "system", "system.json")))
             res["dofs"], res["nnz"] = sysj["dofs"], sysj["nonzeros"]
             bw, bm, bout, _ = r.timed([os.path.join(r.bench, "bare_assemble"), "enriched.vtu",
-                                       "cut.vtp" if case["cut"] else "", os.path.join(ROOT, "pipelines", "beam", "problem.json"),
+                                       "cut.vtp" if case["cut"] else "",
+                                       case.get("problem", os.path.join(ROOT, "pipelines", "beam", "problem.json")),
                                        "0", str(n)], cwd)
             b = json.loads(bout.strip().splitlines()[-1])
             st.update({"bare_loop": b["loop_seconds"], "bare_compute": b["compute_seconds"],
@@ -297,8 +300,9 @@ def growth_rows(cases, stages):
 
 
 def report(cases, mach, runs, args):
-    scale = [c for c in cases if c.get("scale")]
-    cases = [c for c in cases if not c.get("scale")]
+    # the scale cases and the organ example: in the inputs, whole-pipeline, floor and I/O tables only
+    scale = [c for c in cases if c.get("scale") or c.get("extra")]
+    cases = [c for c in cases if not (c.get("scale") or c.get("extra"))]
     beam = [c for c in cases if c["name"] != "reference"]
     ref = [c for c in cases if c["name"] == "reference"]
     largest = max(beam, key=lambda c: c["tets"]) if beam else None
@@ -441,8 +445,8 @@ def report(cases, mach, runs, args):
             L.append("| %s | %s | %.2f | %s |" % (s, f, q, "yes" if q <= 2 else "no (see \"Why not at the floor\")"))
         L.append("")
     for kind in ("reference", "beam"):
-        pair = [c for c in cases + scale if (c["name"] == "reference") == (kind == "reference") and
-                (c["name"] == "reference" or c.get("scale") or c is largest)]
+        pair = ([c for c in cases + scale if c["name"] in ("reference", "reference-1M")] if kind == "reference" else
+                [c for c in cases + scale if c is largest or c["name"] == "beam-1M"])
         if len(pair) == 2 and any(c.get("scale") for c in pair):
             L.append("### Growth to the scale case (%s)" % " -> ".join(c["label"] for c in pair))
             L.append("")
@@ -455,7 +459,9 @@ def report(cases, mach, runs, args):
     L.append("### Commands")
     L.append("")
     L.append("```")
-    L.append("make -f Makefile.examples bench          # = python3 bench/bench.py --build build --runs %d --large-runs %d" % (runs, args.large_runs))
+    L.append("make -f Makefile.examples bench BENCH_ARGS=\"%s\"   # this run: %d run(s) per stage, %d for the largest beam "
+             "and the reference" % (" ".join(a for a in sys.argv[1:] if a not in ("--build", "build", "--from-results")
+                                             and not a.startswith("/")), runs, args.large_runs))
     L.append("# per case, in bench/out/<case>/ (P = pipelines/beam/problem.json; the reference case has no --cut):")
     L.append("xfem-classify -q mesh.vtu --cut cut.vtp -o classified.vtu --summary counts.json")
     L.append("xfem-enrich -q classified.vtu -o enriched.vtu")
@@ -467,7 +473,9 @@ def report(cases, mach, runs, args):
     L.append("bare_assemble enriched.vtu cut.vtp P 0 RUNS                   # floor of xfem-assemble")
     L.append("pin_unsupported system system_pinned && bare_cholmod system_pinned   # floor of xfem-solve (CHOLMOD)")
     L.append("mpirun -np P bare_petsc system                                    # floor of xfem-solve (PETSc, uncut)")
+    L.append("# the organ cases: the same stages with pipelines/organ/problem.json and `xfem-mesh cut-sine`, no rmserror")
     L.append("# --scale adds, one run each, no rmserror: the 1.14M-DOF reference and the ~1M-tet cut beam")
+    L.append("# --quick: one run per stage and floor instead of %d / %d" % (5, 3))
     L.append("```")
     L.append(END)
     return "\n".join(L)
@@ -500,8 +508,14 @@ def main():
                          "beam of about 1M tets (H 0.0016)")
     ap.add_argument("--scale-size", default="0.0016", help="H of the scale beam (m)")
     ap.add_argument("--only-scale", action="store_true", help="run only the scale cases (quick look; not for the doc)")
+    ap.add_argument("--quick", action="store_true", help="one run per stage and floor (--runs 1 --large-runs 1): "
+                    "single runs, for a shared machine")
     ap.add_argument("--no-write", action="store_true", help="print the tables instead of writing docs/PERFORMANCE.md")
+    ap.add_argument("--from-results", action="store_true", help="no runs: the tables from bench/out/results.json "
+                    "of the last run (with the same --runs / --quick)")
     args = ap.parse_args()
+    if args.quick:
+        args.runs, args.large_runs = 1, 1
     build = os.path.abspath(args.build)
     for exe in ("tools/xfem-classify", "bench/bare_cholmod", "bench/bare_petsc", "bench/bare_assemble",
                 "bench/pin_unsupported"):
@@ -522,6 +536,13 @@ def main():
                       "mesh_cmd": ["unstructured-box", "--hi"] + BEAM_HI + ["--size", h]})
     cases[-1]["runs"] = args.large_runs
     scale_stages = ["classify", "enrich", "assemble", "solve", "visualize"]
+    # The organ example (pipelines/organ, without its PNG) at its default size, and at the ~900 tets
+    # of the issue's first measurement: small pipelines where the tools' start-up counts.
+    for label, h in (("organ S", "0.022"), ("organ", "0.006")):
+        cases.append({"name": label.replace(" ", "-"), "label": "%s (H %s)" % (label, h), "cut": True, "extra": True,
+                      "mesh_file": "organ-%s.vtu" % h, "stages": scale_stages, "cut_file": "cut-sine.vtp",
+                      "cut_cmd": ["cut-sine"], "problem": os.path.join(ROOT, "pipelines", "organ", "problem.json"),
+                      "mesh_cmd": ["organ", "--size", h]})
     if args.scale or args.only_scale:
         cases.append({"name": "reference-1M", "label": "reference 1.14M DOFs", "cut": False, "runs": 1, "scale": True,
                       "mesh_file": "reference-1M.vtu", "stages": scale_stages,
@@ -532,16 +553,20 @@ def main():
     if args.only_scale:
         cases = [c for c in cases if c.get("scale")]
     results, ref = [], None
+    if args.from_results:  # the tables again from a finished run's measurements
+        saved = json.load(open(os.path.join(work, "results.json")))
+        mach, results = saved["machine"], saved["cases"]
+        cases = []
     for case in cases:
         log("case %s" % case["name"])
         res, got = run_case(r, case, args.runs, cache, ref)
         if case["name"] == "reference":
             ref = got
         results.append(res)
+        with open(os.path.join(work, "results.json"), "w") as f:  # after every case: nothing measured is lost
+            json.dump({"machine": mach, "cases": results}, f, indent=1)
     block = report(results, mach, args.runs, args)
     log("done in %.0f s" % (time.time() - start))
-    with open(os.path.join(work, "results.json"), "w") as f:
-        json.dump({"machine": mach, "cases": results}, f, indent=1)
     if args.no_write:
         print(block)
     else:

@@ -10,7 +10,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/xfem/ DESTINATION ${CMAKE_INSTALL_IN
   FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_BINARY_DIR}/lib/generated/xfem/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/xfem)
 install(EXPORT xfemTargets NAMESPACE xfem:: DESTINATION ${XFEM_CMAKE_DIR})
-# The library is static: its private dependencies (CGAL, VTK, CHOLMOD, gmsh, PETSc) are linked by
+# The library is static: its private dependencies (CGAL, VTK, CHOLMOD, PETSc; gmsh is loaded at run time) are linked by
 # the consumer, so the config finds them again (with our Find modules for the two without one).
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/xfemConfig.cmake.in
   ${PROJECT_BINARY_DIR}/xfemConfig.cmake INSTALL_DESTINATION ${XFEM_CMAKE_DIR})
@@ -30,4 +30,13 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # Runtime dependencies from the tools' shared libraries (dpkg-shlibdeps); building against the
 # library needs the -dev packages of scripts/install-deps.sh besides.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# gmsh's library is loaded at run time (gmsh_io.cpp), so dpkg-shlibdeps does not see it: its Debian
+# package by the naming rule for libraries (libgmsh.so.4.8 -> libgmsh4.8).
+if(Gmsh_SONAME MATCHES "^(.*)\\.so\\.(.+)$")
+  set(_gmsh_package "${CMAKE_MATCH_1}${CMAKE_MATCH_2}")
+  if(CMAKE_MATCH_1 MATCHES "[0-9]$")
+    set(_gmsh_package "${CMAKE_MATCH_1}-${CMAKE_MATCH_2}")
+  endif()
+  string(TOLOWER "${_gmsh_package}" CPACK_DEBIAN_PACKAGE_DEPENDS)
+endif()
 include(CPack)

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -75,26 +77,49 @@ bool under_mpirun() {
   return false;
 }
 
-// Restarts this very program under `mpirun -np P` with the same arguments (the ranks see the
-// MPI environment and do not restart again). Returns only if mpirun cannot be started.
-void restart_under_mpirun(int processes, int argc, char** argv) {
-  // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
-  std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(processes), "--oversubscribe",
-                                   "--bind-to", "none"};
-  if (::geteuid() == 0) {  // Open MPI refuses root unless told twice
-    args.push_back("--allow-run-as-root");
-    ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  }
+// PETSc and Open MPI take ~40 ms to load on a quiet machine (more than a small CHOLMOD solve), so
+// xfem-solve does not link them: the PETSc backend is the same program built with PETSc,
+// xfem-solve-petsc, next to it (XFEM_SOLVE_LINKS_PETSC). The path of that program, or of this one.
+#ifndef XFEM_SOLVE_LINKS_PETSC
+#define XFEM_SOLVE_LINKS_PETSC 0
+#endif
+std::string petsc_program(char** argv) {
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  args.push_back(ec ? std::string(argv[0]) : self.string());
+  const std::filesystem::path me = ec ? std::filesystem::path(argv[0]) : self;
+  if (XFEM_SOLVE_LINKS_PETSC) return me.string();
+  const auto helper = me.parent_path() / "xfem-solve-petsc";
+  if (!xfem::have_petsc || !std::filesystem::exists(helper))
+    throw xfem::Error("the PETSc backend needs " + helper.string() + (xfem::have_petsc ? ", which is missing" :
+                      ": this build has no PETSc (CMake did not find it)") +
+                      ": use --backend cholmod, or install libpetsc-real-dev and rebuild");
+  return helper.string();
+}
+
+// Replaces this process by `program` with this process's arguments, optionally under
+// `mpirun -np P` (the ranks see the MPI environment and do not restart again). Returns only if
+// the program cannot be started.
+void exec_with_arguments(const std::string& program, int processes, int argc, char** argv) {
+  std::vector<std::string> args;
+  if (processes > 1) {
+    // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
+    args = {"mpirun", "--quiet", "-np", std::to_string(processes), "--oversubscribe", "--bind-to", "none"};
+    if (::geteuid() == 0) {  // Open MPI refuses root unless told twice
+      args.push_back("--allow-run-as-root");
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    }
+  }
+  args.push_back(program);
   for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
   std::vector<char*> cargs;
   for (auto& a : args) cargs.push_back(a.data());
   cargs.push_back(nullptr);
   std::fflush(stderr);
-  ::execvp("mpirun", cargs.data());
+  if (processes > 1)
+    ::execvp("mpirun", cargs.data());
+  else
+    ::execv(program.c_str(), cargs.data());
 }
 
 // The enriched.vtu point array and value that find the mesh point of enriched vector k (FORMATS.md).
@@ -112,7 +137,8 @@ int main(int argc, char** argv) {
       "Writes the full solution (3N values in metres: original, sign and branch DOFs; constrained DOFs at their\n"
       "values) and reports the reaction force (N) and moment (N m, about the origin) of each Dirichlet condition.\n"
       "The backend is chosen from the system unless given: CHOLMOD (direct) for small systems, PETSc CG + GAMG\n"
-      "for large ones, started on several MPI processes by itself (mpirun; --np) when the system is large.",
+      "for large ones, started on several MPI processes by itself (mpirun; --np) when the system is large. The PETSc\n"
+      "backend is the program xfem-solve-petsc next to this one (PETSc and MPI are loaded only when it runs).",
       "xfem-solve out/system -o out/u.mtx --report out/solve.json\n"
       "  xfem-solve out/system -o out/u.mtx --backend petsc --np 2 --rtol 1e-8");
   std::string dir, output, report_path, reactions_path, backend = "auto", ordering = "metis", near_null = "rigid",
@@ -171,6 +197,7 @@ int main(int argc, char** argv) {
         const int wanted = processes > 0 ? processes
                                          : xfem::automatic_processes(dofs, static_cast<int>(std::thread::hardware_concurrency()));
         if (wanted > 1) {
+          const std::string program = petsc_program(argv);
           // The checks a rank would fail on, here once: one error line instead of one per rank.
           const std::string k_path = xfem::system_matrix_file(dir, xfem::system_format(dir));
           if (xfem::system_format(dir) == xfem::SystemFormat::Petsc) {
@@ -180,14 +207,24 @@ int main(int argc, char** argv) {
                                 ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs));
           }
           xfem::cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
-          restart_under_mpirun(wanted, argc, argv);
+          exec_with_arguments(program, wanted, argc, argv);
           xfem::cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
         }
       }
     }
+#if XFEM_SOLVE_LINKS_PETSC
     std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
     const bool root = !mpi || mpi->rank() == 0;
+#else
+    // One process (or one rank of a user's mpirun): the PETSc program takes over with the same
+    // arguments; it decides again from the same files, so it comes to the same choice.
+    if (backend == "petsc") {
+      exec_with_arguments(petsc_program(argv), 1, argc, argv);
+      throw xfem::Error("cannot start " + petsc_program(argv) + ": " + std::strerror(errno));
+    }
+    const bool root = true;  // no PETSc session, no ranks here
+#endif
     // Failures are collective (every rank reads the same files and fails alike): rank 0 alone
     // reports, so a bad input gives one error line, not one per rank (-v keeps them all).
     if (!root && !tool->verbose) {
@@ -203,8 +240,9 @@ int main(int argc, char** argv) {
     // semi-definite K is a zero row), which stands in for K in `s`.
     const bool distributed_load = backend == "petsc" && xfem::system_format(dir) == xfem::SystemFormat::Petsc;
     xfem::LinearSystem s = xfem::read_linear_system(dir, !distributed_load);
-    xfem::PetscMatrix distributed;
     long nonzeros = 0;
+#if XFEM_SOLVE_LINKS_PETSC
+    xfem::PetscMatrix distributed;
     if (distributed_load) {
       const std::string k_path = xfem::system_matrix_file(dir, xfem::SystemFormat::Petsc);
       distributed = xfem::petsc_load_matrix(k_path, 3 * s.n);
@@ -218,6 +256,9 @@ int main(int argc, char** argv) {
       nonzeros = (s.K.nonZeros() + s.K.rows()) / 2;  // stored triangle (K is symmetric)
       if (backend == "petsc") distributed = xfem::petsc_matrix(s.K);
     }
+#else
+    nonzeros = (s.K.nonZeros() + s.K.rows()) / 2;  // stored triangle (K is symmetric)
+#endif
     info(dir + ": N = " + std::to_string(s.n) + " (NP " + std::to_string(s.np) + ", NS " + std::to_string(s.ns) +
          ", NB " + std::to_string(s.nb) + "), " + std::to_string(3 * s.n) + " DOFs, " + std::to_string(nonzeros) +
          " non-zeros in the lower triangle, " + std::to_string(s.fixed.size()) + " fixed; read in " +
@@ -280,11 +321,13 @@ int main(int argc, char** argv) {
            g(c.solve_seconds) + " s");
       report["ordering"] = c.ordering;
       report["factor_nonzeros"] = static_cast<long>(c.factor_nonzeros);
+      report["factor_flops"] = c.flops;
       report["rcond_estimate"] = c.rcond;
       report["setup_seconds"] = c.analyze_seconds + c.factor_seconds;
       report["solve_seconds"] = c.solve_seconds;
       residual = xfem::relative_residual(s.K, s.f, u, reduced);
     } else {
+#if XFEM_SOLVE_LINKS_PETSC
       const std::string block = enriched_block != "auto" ? enriched_block : s.n > s.np ? "direct" : "gamg";
       xfem::PetscSolveOptions options{rtol, max_iterations, near_null, block, {}};
       const double t_start = xfem::cli::now();
@@ -311,6 +354,7 @@ int main(int argc, char** argv) {
       report["rtol"] = rtol;
       report["setup_seconds"] = p.setup_seconds;
       report["solve_seconds"] = p.solve_seconds;
+#endif
     }
     info("relative residual ||K u - f|| / ||f|| on the free DOFs: " + g(residual));
     report["relative_residual"] = residual;
@@ -320,8 +364,13 @@ int main(int argc, char** argv) {
                         "): K is numerically singular; no output written");
     if (root) {
       // r = K u - f on the constrained DOFs. Each PETSc rank loaded only its rows of K, and `s` holds
-      // its diagonal only: the root reads the whole K again for the reactions.
-      const xfem::LinearSystem full = distributed_load ? xfem::read_linear_system(dir, true) : xfem::LinearSystem();
+      // its diagonal only: the root reads the rows of the constrained DOFs from K again (not all of K:
+      // at 1.14M DOFs that took seconds and a gigabyte) for the reactions.
+      xfem::LinearSystem full;
+      if (distributed_load) {
+        full = xfem::read_linear_system(dir, false);
+        full.K = xfem::read_petsc_symmetric_matrix_rows(xfem::system_matrix_file(dir, xfem::SystemFormat::Petsc), full.fixed);
+      }
       const xfem::Reactions reactions = xfem::reactions(dir, distributed_load ? full : s, u);
       for (const auto& r : reactions.conditions) info(xfem::describe_reaction(r, reactions.moments));
       report["reactions"] = xfem::reactions_json(reactions.conditions, reactions.applied, reactions.moments);

@@ -2,9 +2,11 @@
 #include "xfem/cholmod_solver.h"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 namespace xfem {
 namespace {
@@ -24,6 +26,37 @@ struct Session {
   }
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
+};
+
+// Below this many floating-point operations (~0.1-0.2 s on one core) the factorization runs its BLAS
+// on one thread: OpenBLAS's worker threads then cost more in waking and waiting than they save,
+// most of all on a busy machine (the organ example's 1,740-DOF solve: 0.11 s wall with the threads,
+// 0.06 s without, docs/PERFORMANCE.md).
+constexpr double kThreadedBlasFlops = 1e9;
+
+// OpenBLAS's thread count for the lifetime of the object, when the BLAS behind CHOLMOD is OpenBLAS
+// (found by name at run time: another BLAS is left alone).
+class BlasThreads {
+ public:
+  explicit BlasThreads(int threads) {
+    using Get = int (*)();
+    get_ = reinterpret_cast<Get>(::dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    set_ = reinterpret_cast<Set>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (!get_ || !set_) return;
+    before_ = get_();
+    if (before_ != threads) set_(threads);
+  }
+  ~BlasThreads() {
+    if (set_ && before_ > 0) set_(before_);
+  }
+  BlasThreads(const BlasThreads&) = delete;
+  BlasThreads& operator=(const BlasThreads&) = delete;
+
+ private:
+  using Set = void (*)(int);
+  int (*get_)() = nullptr;
+  Set set_ = nullptr;
+  int before_ = 0;
 };
 
 }  // namespace
@@ -74,7 +107,11 @@ CholmodResult cholmod_solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, 
   r.flops = s.c.fl;
 
   t0 = std::chrono::steady_clock::now();
-  cholmod_factorize(&a, s.L, &s.c);
+  {
+    std::unique_ptr<BlasThreads> one_thread;
+    if (r.flops < kThreadedBlasFlops) one_thread = std::make_unique<BlasThreads>(1);
+    cholmod_factorize(&a, s.L, &s.c);
+  }
   r.factor_seconds = seconds_since(t0);
   if (s.c.status == CHOLMOD_NOT_POSDEF || s.L->minor < s.L->n) {
     const long minor = static_cast<long>(s.L->minor);

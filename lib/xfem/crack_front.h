@@ -41,6 +41,10 @@ struct FrontPolyline {
   std::vector<double> arc;               ///< arc length at each vertex, arc[0] = 0
   bool closed = false;
   double length = 0.0;                   ///< total arc length, metres (a closed chain's closing segment included)
+  /// Unit tangent c and normal b at vertices 0 .. segments(), the values frame() interpolates,
+  /// filled by front_polylines (frame() is called for every integration point of a branch-enriched
+  /// tet); a chain built without them has them computed on each call.
+  std::vector<Eigen::Vector3d> vertex_c, vertex_b;
 
   int segments() const { return static_cast<int>(points.size()) - (closed ? 0 : 1); }
   /// Position, unit tangent c and unit cut normal b at arc length s (s is wrapped for a closed

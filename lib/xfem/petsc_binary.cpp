@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/petsc_binary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -199,6 +200,64 @@ PetscMatrixHeader read_petsc_matrix_header(const std::string& path) {
                 std::to_string(m.cols) + ", " + std::to_string(m.nonzeros) + " non-zeros) needs " +
                 std::to_string(expected) + (size < expected ? " (truncated?)" : " (trailing bytes)") + kHint);
   return m;
+}
+
+SparseMatrix read_petsc_symmetric_matrix_rows(const std::string& path, const std::vector<long>& wanted) {
+  const PetscMatrixHeader h = read_petsc_matrix_header(path);  // size checked against the file
+  File file;
+  file.f = std::fopen(path.c_str(), "rb");
+  if (!file.f) throw Error(path + ": cannot open for reading (does it exist?)");
+  const auto read_at = [&](long offset, void* out, std::size_t bytes) {
+    if (std::fseek(file.f, offset, SEEK_SET) != 0 || std::fread(out, 1, bytes, file.f) != bytes)
+      throw Error(path + ": cannot read");
+  };
+  std::vector<std::uint32_t> lengths(static_cast<std::size_t>(h.rows));
+  read_at(16, lengths.data(), 4 * lengths.size());
+  std::vector<long> first(static_cast<std::size_t>(h.rows) + 1, 0);  // offset of each row's entries
+  for (long i = 0; i < h.rows; ++i) {
+    const long n = static_cast<std::int32_t>(swap(lengths[i]));
+    if (n < 0 || n > h.nonzeros - first[i])
+      throw Error(path + ": row " + std::to_string(i) + " claims " + std::to_string(n) +
+                  " entries, more than the header's " + std::to_string(h.nonzeros) + " non-zeros left" + kHint);
+    first[i + 1] = first[i] + n;
+  }
+  SparseMatrix K(h.cols, h.rows);  // column d = the file's row d
+  std::vector<long> rows = wanted;
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  long total = 0;
+  for (long d : rows) {
+    if (d < 0 || d >= h.rows)
+      throw Error(path + ": row " + std::to_string(d) + " asked for, the matrix has " + std::to_string(h.rows));
+    total += first[d + 1] - first[d];
+  }
+  K.resizeNonZeros(total);
+  int* outer = K.outerIndexPtr();
+  std::fill(outer, outer + h.rows + 1, 0);
+  for (long d : rows) outer[d + 1] = static_cast<int>(first[d + 1] - first[d]);
+  for (long i = 0; i < h.rows; ++i) outer[i + 1] += outer[i];
+  const long values = 16 + 4 * h.rows + 4 * h.nonzeros;
+  std::vector<std::uint32_t> index;
+  std::vector<std::uint64_t> value;
+  for (long d : rows) {
+    const std::size_t n = static_cast<std::size_t>(first[d + 1] - first[d]);
+    index.resize(n), value.resize(n);
+    read_at(16 + 4 * h.rows + 4 * first[d], index.data(), 4 * n);
+    read_at(values + 8 * first[d], value.data(), 8 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const long j = static_cast<std::int32_t>(swap(index[k]));
+      const std::uint64_t bits = swap(value[k]);
+      double v;
+      std::memcpy(&v, &bits, 8);
+      if (j < 0 || j >= h.cols || (k > 0 && j <= K.innerIndexPtr()[outer[d] + k - 1]))
+        throw Error(path + ": row " + std::to_string(d) + ": column index " + std::to_string(j) +
+                    (j < 0 || j >= h.cols ? " out of range" : " not increasing (duplicate or unsorted)") + kHint);
+      if (!std::isfinite(v)) throw Error(path + ": row " + std::to_string(d) + " holds a non-finite value" + kHint);
+      K.innerIndexPtr()[outer[d] + k] = static_cast<int>(j);
+      K.valuePtr()[outer[d] + k] = v;
+    }
+  }
+  return K;
 }
 
 void write_petsc_vector(const Eigen::VectorXd& v, const std::string& path) {

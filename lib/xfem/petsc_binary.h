@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "xfem/matrix_market.h"
 
@@ -36,6 +37,13 @@ struct PetscMatrixHeader {
   long rows = 0, cols = 0, nonzeros = 0;
 };
 PetscMatrixHeader read_petsc_matrix_header(const std::string& path);
+
+/// Only some rows of a symmetric matrix's PETSc binary file: a cols x rows matrix whose column d
+/// is the file's row d for every d in `rows` (= column d of the symmetric matrix), the other
+/// columns empty. Reads the row lengths and those rows alone (what the reactions K u - f on the
+/// constrained DOFs need, without the whole K). Throws like read_petsc_matrix, and for a row
+/// outside the matrix; does not check the symmetry.
+SparseMatrix read_petsc_symmetric_matrix_rows(const std::string& path, const std::vector<long>& rows);
 
 /// Writes / reads a PETSc binary vector (same checks as the matrix reader).
 void write_petsc_vector(const Eigen::VectorXd& v, const std::string& path);

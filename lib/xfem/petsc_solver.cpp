@@ -16,15 +16,6 @@
 
 namespace xfem {
 
-std::string automatic_backend(long dofs, bool enriched) {
-  return dofs >= (enriched ? kPetscFromDofsEnriched : kPetscFromDofs) ? "petsc" : "cholmod";
-}
-
-int automatic_processes(long dofs, int cores) {
-  const long wanted = (dofs + kDofsPerProcess - 1) / kDofsPerProcess;
-  return static_cast<int>(std::max(1L, std::min<long>(std::max(cores, 1), wanted)));
-}
-
 #if XFEM_HAVE_PETSC
 namespace {
 

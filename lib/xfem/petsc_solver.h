@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <string>
@@ -16,11 +17,18 @@ namespace xfem {
 /// stays the quicker choice up to a larger size there.
 constexpr long kPetscFromDofs = 100000;
 constexpr long kPetscFromDofsEnriched = 150000;
-std::string automatic_backend(long dofs, bool enriched);
+/// Inline (as automatic_processes): xfem-solve decides without linking PETSc, whose libraries it
+/// loads only when the PETSc backend runs (xfem-solve-petsc).
+inline std::string automatic_backend(long dofs, bool enriched) {
+  return dofs >= (enriched ? kPetscFromDofsEnriched : kPetscFromDofs) ? "petsc" : "cholmod";
+}
 
 /// The automatic number of PETSc processes: one per kDofsPerProcess DOFs, at least 1, at most `cores`.
 constexpr long kDofsPerProcess = 60000;
-int automatic_processes(long dofs, int cores);
+inline int automatic_processes(long dofs, int cores) {
+  const long wanted = (dofs + kDofsPerProcess - 1) / kDofsPerProcess;
+  return static_cast<int>(std::max(1L, std::min<long>(std::max(cores, 1), wanted)));
+}
 
 /// PETSc and MPI for the lifetime of the object (PetscInitialize / PetscFinalize), so that
 /// `mpirun -np P xfem-solve --backend petsc` runs one process per rank. PETSc options come from

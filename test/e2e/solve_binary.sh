@@ -27,12 +27,16 @@ expect_error() {  # expect_error <text> <system dir> [args]: exit 1, one error l
 grep -q '"format": "petsc"' "$S/sys/system.json" || fail "default format is not petsc: $(cat "$S/sys/system.json")"
 
 # Automatic backend: a small system goes to CHOLMOD.
-"$SOLVE" -q "$S/sys" -o "$S/u.mtx" --report "$S/auto.json" || fail "auto solve"
+"$SOLVE" -q "$S/sys" -o "$S/u.mtx" --report "$S/auto.json" --reactions "$S/r.mtx" || fail "auto solve"
 [ "$(json backend "$S/auto.json")" = cholmod ] || fail "small system: auto picked $(json backend "$S/auto.json")"
 
 if "$SOLVE" --version | grep -q petsc; then
   # PETSc on 1 rank, then --np 2 (xfem-solve starts itself under mpirun; each rank loads its rows).
-  "$SOLVE" -q "$S/sys" -o "$S/u1.mtx" --backend petsc --np 1 --rtol 1e-10 --report "$S/p1.json" || fail "petsc 1"
+  "$SOLVE" -q "$S/sys" -o "$S/u1.mtx" --backend petsc --np 1 --rtol 1e-10 --report "$S/p1.json" \
+    --reactions "$S/r1.mtx" || fail "petsc 1"
+  # The reactions from the rows of the constrained DOFs alone (PETSc path) = CHOLMOD's from the whole K.
+  d=$(maxdiff "$S/r.mtx" "$S/r1.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-6)}' || fail "reactions CHOLMOD vs PETSc: $d N"
+  awk '!/^%/ && NF == 1 && $1 != 0 {n++} END {exit !(n > 0)}' "$S/r1.mtx" || fail "PETSc reactions are all zero"
   [ "$(json processes "$S/p1.json")" = 1 ] || fail "--np 1: $(json processes "$S/p1.json") processes"
   if command -v mpirun >/dev/null; then
     "$SOLVE" -q "$S/sys" -o "$S/u2.mtx" --np 2 --rtol 1e-10 --report "$S/p2.json" 2>"$S/err2.txt" ||
@@ -84,5 +88,18 @@ fi
 # An incomplete directory (no system.json: an interrupted xfem-assemble) is refused.
 rm -rf "$S/partial"; cp -r "$S/sys" "$S/partial"; rm "$S/partial/system.json"
 expect_error "xfem-solve: error: $S/partial: no system.json" "$S/partial"
+# Start-up: the tools link neither PETSc/MPI nor gmsh (loaded only when used); the PETSc backend is
+# xfem-solve-petsc next to xfem-solve, and without it --backend petsc is one error line.
+if command -v readelf >/dev/null; then
+  for t in xfem-solve xfem-classify xfem-enrich xfem-assemble xfem-visualize xfem-mesh; do
+    libs=$(readelf -d "$B/$t" | grep NEEDED | grep -E 'petsc|libmpi|gmsh')
+    [ -z "$libs" ] || fail "$t links what it should load only when used: $libs"
+  done
+fi
+if "$SOLVE" --version | grep -q petsc; then
+  mkdir -p "$S/lone" && cp "$SOLVE" "$S/lone/"
+  SOLVE=$S/lone/xfem-solve expect_error "xfem-solve-petsc, which is missing" "$S/sys" --backend petsc
+  SOLVE=$S/lone/xfem-solve expect_error "xfem-solve-petsc, which is missing" "$S/sys" --np 2
+fi
 rm -rf "$S"
 echo "solve_binary e2e: ok"

@@ -87,6 +87,34 @@ TEST_CASE("petsc_binary: a symmetric matrix and a vector come back bit for bit",
   CHECK(xfem::read_petsc_vector(vpath).size() == 0);
 }
 
+TEST_CASE("petsc_binary: some rows of a symmetric matrix are its columns, bit for bit, the rest empty",
+          "[petsc_binary]") {
+  const xfem::SparseMatrix lower = awkward_lower();
+  const std::string path = scratch("K_rows.petsc");
+  xfem::write_petsc_symmetric_matrix(lower, path);
+  const xfem::SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
+  const xfem::SparseMatrix some = xfem::read_petsc_symmetric_matrix_rows(path, {3, 0, 3});  // unsorted, repeated
+  REQUIRE(some.rows() == 5);
+  REQUIRE(some.cols() == 5);
+  for (int j = 0; j < 5; ++j) {
+    const bool asked = j == 0 || j == 3;
+    CHECK(some.outerIndexPtr()[j + 1] - some.outerIndexPtr()[j] ==
+          (asked ? full.outerIndexPtr()[j + 1] - full.outerIndexPtr()[j] : 0));
+    if (!asked) continue;
+    for (int k = 0; k < some.outerIndexPtr()[j + 1] - some.outerIndexPtr()[j]; ++k) {
+      CHECK(some.innerIndexPtr()[some.outerIndexPtr()[j] + k] == full.innerIndexPtr()[full.outerIndexPtr()[j] + k]);
+      CHECK(std::memcmp(some.valuePtr() + some.outerIndexPtr()[j] + k, full.valuePtr() + full.outerIndexPtr()[j] + k, 8) == 0);
+    }
+  }
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(5, 1, 5);
+  for (int d : {0, 3}) CHECK(some.col(d).dot(u) == full.col(d).dot(u));
+  CHECK(xfem::read_petsc_symmetric_matrix_rows(path, {}).nonZeros() == 0);
+  CHECK_THROWS_WITH(xfem::read_petsc_symmetric_matrix_rows(path, {5}), Contains("row 5 asked for, the matrix has 5"));
+  std::vector<char> b = bytes_of(path);  // truncated: the header check refuses it first
+  std::ofstream(path, std::ios::binary).write(b.data(), static_cast<std::streamsize>(b.size() - 3));
+  CHECK_THROWS_WITH(xfem::read_petsc_symmetric_matrix_rows(path, {0}), Contains("(truncated?)"));
+}
+
 TEST_CASE("petsc_binary: damaged files are refused with what is wrong", "[petsc_binary]") {
   const std::string path = scratch("good.petsc"), bad = scratch("bad.petsc");
   xfem::write_petsc_symmetric_matrix(awkward_lower(), path);
