@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
       "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
-  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis";
+  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "auto";
   int steps = 0;
   bool solutions = false, cuts = false;
   auto& app = tool->app;
@@ -61,6 +61,12 @@ int main(int argc, char** argv) {
   app.add_option("--report", report_path, "JSON report: the factorization once, per step the time, counts and DOFs");
   app.add_flag("--solutions", solutions, "also write each step's solution DIR/u_NNN.mtx (3N values, m, as xfem-solve's u.mtx)");
   app.add_flag("--cuts", cuts, "also write each step's cut DIR/cut_NNN.vtp (the triangles with time <= t_k)");
+  app.add_option("--solver", solver,
+                 "how each step is solved: schur (block elimination on the enriched DOFs with the uncut body's one "
+                 "factorization: a dense Schur complement, cheap for small cuts), refactor (the uncut K_ss, reused, with "
+                 "the enriched rows and columns, factorized anew: cheaper from a few hundred enriched DOFs on) or auto "
+                 "(default: schur up to " + std::to_string(xfem::kSchurMaxEnriched) + " enriched DOFs); same solution")
+      ->check(CLI::IsMember({"auto", "schur", "refactor"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
@@ -107,7 +113,10 @@ int main(int argc, char** argv) {
       auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
       const xfem::CutSolution step = [&] {
         try {
-          return xfem::solve_cut(body, cut);
+          return xfem::solve_cut(body, cut, {},
+                                 solver == "schur"      ? xfem::CutSolver::Schur
+                                 : solver == "refactor" ? xfem::CutSolver::Refactor
+                                                        : xfem::CutSolver::Auto);
         } catch (const xfem::Error& e) {
           std::string m = e.what();
           if (m.rfind("cut: ", 0) == 0) m = m.substr(5);
@@ -135,7 +144,7 @@ int main(int argc, char** argv) {
                       std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
                       std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(solved) +
                       " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
-                      ", Schur " + g(step.schur.schur_seconds + step.schur.dense_seconds) + "), written in " +
+                      (step.schur_used ? ", Schur " : ", refactorization ") + g(step.solve_seconds) + "), written in " +
                       g(written) + " s");
       report["steps"].push_back({{"step", k},
                                  {"time", t[k - 1]},
@@ -151,6 +160,7 @@ int main(int argc, char** argv) {
                                  {"enriched_tets", step.enriched_tets},
                                  {"classify_seconds", step.classify_seconds},
                                  {"assemble_seconds", step.assemble_seconds},
+                                 {"solver", step.schur_used ? "schur" : "refactor"},
                                  {"schur_seconds", step.schur.schur_seconds},
                                  {"dense_seconds", step.schur.dense_seconds},
                                  {"solve_seconds", step.solve_seconds},

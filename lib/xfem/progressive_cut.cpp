@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "xfem/assembly.h"
+#include "xfem/cholmod_solver.h"
 #include "xfem/dof_numbering.h"
 #include "xfem/element_stiffness.h"
 #include "xfem/error.h"
@@ -63,10 +64,13 @@ UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering 
   body.reduced = r.reduced;
   body.factor = std::make_unique<CholeskyFactor>(r.K, ordering);
   body.w = body.factor->solve(r.f).col(0);
+  body.K_ss = r.K.triangularView<Eigen::Lower>();
+  body.g_s = r.f;
   return body;
 }
 
-CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut, const ClassifyOptions& options) {
+CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut, const ClassifyOptions& options,
+                      CutSolver solver) {
   CutSolution out;
   const TetMesh& mesh = body.mesh;
   auto t0 = std::chrono::steady_clock::now();
@@ -176,7 +180,31 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
   out.assemble_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const Eigen::VectorXd x = schur_solve(*body.factor, body.w, K_se, K_ee, g_e, &out.schur);
+  out.schur_used = solver == CutSolver::Schur || (solver == CutSolver::Auto && m <= kSchurMaxEnriched);
+  Eigen::VectorXd x;
+  if (out.schur_used) {
+    x = schur_solve(*body.factor, body.w, K_se, K_ee, g_e, &out.schur);
+  } else {  // [K_ss K_se; K_es K_ee], lower triangle, factorized anew
+    std::vector<Eigen::Triplet<double, int>> all;
+    all.reserve(static_cast<std::size_t>(body.K_ss.nonZeros() + K_se.nonZeros() + K_ee.nonZeros()));
+    for (int c = 0; c < body.K_ss.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(body.K_ss, c); it; ++it) all.emplace_back(it.row(), c, it.value());
+    for (int c = 0; c < K_se.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(K_se, c); it; ++it) all.emplace_back(static_cast<int>(nf) + c, it.row(), it.value());
+    for (int c = 0; c < K_ee.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(K_ee, c); it; ++it)
+        all.emplace_back(static_cast<int>(nf) + it.row(), static_cast<int>(nf) + c, it.value());
+    SparseMatrix M(nf + m, nf + m);
+    M.setFromTriplets(all.begin(), all.end());
+    Eigen::VectorXd g(nf + m);
+    g << body.g_s, g_e;
+    try {
+      x = cholmod_solve(M, g, body.factor->ordering == "amd" ? Ordering::Amd : Ordering::Metis).x;
+    } catch (const NotPositiveDefinite&) {
+      throw Error("the cut body's stiffness matrix is not positive definite: a piece of it can move freely (no "
+                  "Dirichlet condition on it) or an enrichment is degenerate");
+    }
+  }
   out.u = Eigen::VectorXd::Zero(dofs);
   out.u.head(first) = body.constrained;
   for (long i = 0; i < nf; ++i) out.u[body.free_dofs[i]] = x[i];

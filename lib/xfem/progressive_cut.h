@@ -29,6 +29,8 @@ struct UncutBody {
   std::vector<int> reduced;        ///< scalar original DOF -> reduced index, -1 when constrained
   std::unique_ptr<CholeskyFactor> factor;  ///< of K_ss, the free original DOFs' block
   Eigen::VectorXd w;               ///< K_ss^-1 (f_s - K_sc u_c): the uncut body's free displacements
+  SparseMatrix K_ss;               ///< the free original DOFs' block, lower triangle (for CutSolver::Refactor)
+  Eigen::VectorXd g_s;             ///< f_s - K_sc u_c
   double assemble_seconds = 0;
 };
 
@@ -37,6 +39,17 @@ struct UncutBody {
 /// the standard block would change with the cut) and for an unconstrained body (naming the
 /// condition that is missing, as xfem-solve does).
 UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering ordering = Ordering::Metis);
+
+/// How a cut's system is solved (both give the same solution up to round-off):
+///   Schur     block elimination on the enriched DOFs with the uncut body's one factorization: the
+///             dense Schur complement S costs about (enriched DOFs) solves with the factor and
+///             (enriched DOFs)^3 / 3 flops, cheap for a small cut, dearer than a new factorization
+///             for thousands of enriched DOFs;
+///   Refactor  the uncut body's K_ss (reused, not reassembled) with the enriched rows and columns
+///             appended, factorized anew by CHOLMOD: the cost of one sparse factorization;
+///   Auto      Schur up to `kSchurMaxEnriched` enriched DOFs, else Refactor.
+enum class CutSolver { Auto, Schur, Refactor };
+constexpr long kSchurMaxEnriched = 300;
 
 /// One cut of a sweep solved on the factorized uncut body.
 struct CutSolution {
@@ -47,15 +60,16 @@ struct CutSolution {
   long enriched_dofs = 0;          ///< scalar enriched DOFs solved for (size of the Schur complement)
   long unsupported_dofs = 0;       ///< enriched DOFs with a zero row of K: fixed to 0 (as xfem-solve does)
   double classify_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
+  bool schur_used = false;         ///< which solver ran (Auto decides per cut)
   SchurStats schur;
 };
 
 /// Classifies the body against `cut`, numbers the DOFs, assembles only the tets with enriched DOFs
 /// (their K_ee, K_es; f_e = 0 since loads act on original DOFs) and solves by block elimination
-/// on the enriched DOFs with body.factor. The result equals xfem-classify, -enrich, -assemble and
+/// on the enriched DOFs with body.factor, or by a new factorization (`solver`). The result equals xfem-classify, -enrich, -assemble and
 /// -solve on the same cut up to round-off. Throws xfem::Error when a piece cut off the body has no
 /// Dirichlet condition.
 CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut,
-                      const ClassifyOptions& options = {});
+                      const ClassifyOptions& options = {}, CutSolver solver = CutSolver::Auto);
 
 }  // namespace xfem

@@ -49,7 +49,9 @@ touch "$S/file"
 
 # The sweep, then every step from scratch.
 "$SWEEP" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/frames" --report "$S/report.json" \
-  --solutions --cuts 2>"$S/progress.txt" || fail "sweep: $(cat "$S/progress.txt")"
+  --solutions --cuts --solver schur 2>"$S/progress.txt" || fail "sweep: $(cat "$S/progress.txt")"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/refactor" --solutions --solver refactor \
+  || fail "--solver refactor"
 [ "$(grep -c "^xfem-sweep: step [1-5]/5" "$S/progress.txt")" -eq 5 ] || fail "progress per step: $(cat "$S/progress.txt")"
 "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/quiet" 2>"$S/quiet.txt" || fail "-q"
 [ ! -s "$S/quiet.txt" ] || fail "-q must silence the progress: $(cat "$S/quiet.txt")"
@@ -70,6 +72,10 @@ for k in 001 002 003 004 005; do
     END { if (n == 0 || uu == 0) { print "step " k ": no values"; exit 1 }
           r = sqrt(dd / uu); if (r > 1e-9) { print "step " k ": relative difference " r; exit 1 } }' \
     || fail "step $k differs from the from-scratch run"
+  paste <(mtx_values "$D/u.mtx") <(mtx_values "$S/refactor/u_$k.mtx") | awk -v k="$k" '
+    { n++; d = $1 - $2; dd += d * d; uu += $1 * $1 }
+    END { r = sqrt(dd / uu); if (!(r <= 1e-9)) { print "step " k ": relative difference " r; exit 1 } }' \
+    || fail "step $k (--solver refactor) differs from the from-scratch run"
   [ "$(mtx_values "$D/u.mtx" | wc -l)" -eq "$(mtx_values "$F/u_$k.mtx" | wc -l)" ] || fail "step $k: N differs"
   # The frame is xfem-visualize's output on the same split: same points and cells.
   for pair in "deformed.vtu step_$k.vtu" "wound.vtp step_${k}_wound.vtp"; do

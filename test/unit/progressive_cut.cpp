@@ -79,7 +79,10 @@ TEST_CASE("progressive cut: the block elimination on the enriched DOFs equals th
   for (double front : {-0.1, 0.3, 0.55, 1.2}) {  // no tet cut, partial cuts, a cut through
     INFO("front at x = " << front);
     const auto cut = partial_cut(front);
-    const xfem::CutSolution step = xfem::solve_cut(body, cut);
+    const xfem::CutSolution step = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Schur);
+    const xfem::CutSolution again = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Refactor);
+    CHECK(step.schur_used);
+    CHECK(!again.schur_used);
     // The whole system as xfem-assemble and xfem-solve make it.
     xfem::LinearSystem s;
     const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
@@ -93,6 +96,7 @@ TEST_CASE("progressive cut: the block elimination on the enriched DOFs equals th
     REQUIRE(step.u.size() == u.size());
     CHECK(step.enriched_dofs == 3 * (em.n - em.np) - static_cast<long>(unsupported.size()));
     CHECK((step.u - u).norm() <= 1e-10 * u.norm());
+    CHECK((again.u - u).norm() <= 1e-10 * u.norm());
     if (front > 0) CHECK(step.enriched_dofs > 0);
   }
 }
@@ -108,6 +112,8 @@ TEST_CASE("progressive cut: exact Dirichlet fields and unconstrained pieces are 
   p.dirichlet.pop_back();  // only the bottom is held: a cut through the box frees the top
   const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
   CHECK_THROWS_WITH(xfem::solve_cut(body, partial_cut(1.2)), Catch::Contains("has no Dirichlet condition"));
+  CHECK_THROWS_WITH(xfem::solve_cut(body, partial_cut(1.2), {}, xfem::CutSolver::Refactor),
+                    Catch::Contains("has no Dirichlet condition"));
 }
 
 TEST_CASE("schur solve: the block elimination solves the block system", "[progressive_cut]") {
