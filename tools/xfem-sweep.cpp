@@ -49,8 +49,9 @@ int main(int argc, char** argv) {
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
   std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "auto";
-  int steps = 0;
-  bool solutions = false, cuts = false;
+  int steps = 0, width = 1200, height = 900;
+  double scale = 1.0;
+  bool solutions = false, cuts = false, png = false;
   auto& app = tool->app;
   app.add_option("body", body_path, "tetrahedral mesh of the uncut body (.vtu/.vtk/.msh)")->required();
   app.add_option("-c,--cut", cut_path, "the sweep: cut triangles with cell array 'time' in s (.vtp/.vtu/.vtk)")->required();
@@ -61,6 +62,12 @@ int main(int argc, char** argv) {
   app.add_option("--report", report_path, "JSON report: the factorization once, per step the time, counts and DOFs");
   app.add_flag("--solutions", solutions, "also write each step's solution DIR/u_NNN.mtx (3N values, m, as xfem-solve's u.mtx)");
   app.add_flag("--cuts", cuts, "also write each step's cut DIR/cut_NNN.vtp (the triangles with time <= t_k)");
+  app.add_flag("--png", png, "also render each step as DIR/step_NNN.png with one camera and one colour range for the "
+                             "whole sweep (those of the last step; needs an X display: run under xvfb-run -a)");
+  app.add_option("--scale", scale, "displacement magnification in the pictures, dimensionless")
+      ->check(xfem::cli::range(1e-6, 1e6));
+  app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
+  app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--solver", solver,
                  "how each step is solved: schur (block elimination on the enriched DOFs with the uncut body's one "
                  "factorization: a dense Schur complement, cheap for small cuts), refactor (the uncut K_ss, reused, with "
@@ -74,6 +81,8 @@ int main(int argc, char** argv) {
     if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
       throw xfem::Error(dir + ": exists and is not a directory");
     if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
+    if (png && (!std::getenv("DISPLAY") || !*std::getenv("DISPLAY")))
+      throw xfem::Error("--png: rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
     std::vector<std::string> warnings;
     const xfem::TetMesh mesh = xfem::read_tet_mesh(body_path, &warnings);
     const xfem::TriangleMesh sweep = xfem::read_triangle_mesh(cut_path, &warnings);
@@ -108,39 +117,74 @@ int main(int argc, char** argv) {
                                {"seconds", setup}};
     report["steps"] = xfem::Json::array();
     std::vector<xfem::CollectionEntry> collection;
-    for (int k = 1; k <= steps; ++k) {
-      start = xfem::cli::now();
+    const auto solve_step = [&](int k) {
       auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
-      const xfem::CutSolution step = [&] {
-        try {
-          return xfem::solve_cut(body, cut, {},
-                                 solver == "schur"      ? xfem::CutSolver::Schur
-                                 : solver == "refactor" ? xfem::CutSolver::Refactor
-                                                        : xfem::CutSolver::Auto);
-        } catch (const xfem::Error& e) {
-          std::string m = e.what();
-          if (m.rfind("cut: ", 0) == 0) m = m.substr(5);
-          throw xfem::Error(cut_path + ": step " + std::to_string(k) + " (t = " + g(t[k - 1]) + " s): " + m);
-        }
-      }();
-      const double solved = xfem::cli::now() - start;
-      const double write_start = xfem::cli::now();
+      try {
+        return xfem::solve_cut(body, cut, {},
+                               solver == "schur"      ? xfem::CutSolver::Schur
+                               : solver == "refactor" ? xfem::CutSolver::Refactor
+                                                      : xfem::CutSolver::Auto);
+      } catch (const xfem::Error& e) {
+        std::string m = e.what();
+        if (m.rfind("cut: ", 0) == 0) m = m.substr(5);
+        throw xfem::Error(cut_path + ": step " + std::to_string(k) + " (t = " + g(t[k - 1]) + " s): " + m);
+      }
+    };
+    const auto make_frame = [&](const xfem::CutSolution& step) {
       const xfem::EnrichedMesh& em = step.em;
       const xfem::SplitMesh split = em.cut ? xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(),
                                                               em.front.segments())
                                            : xfem::unsplit_mesh(em.mesh, em.side);
-      const xfem::DeformedBody frame =
-          xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, step.u), problem.E, problem.nu);
+      return xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, step.u), problem.E, problem.nu);
+    };
+    // Pictures: the camera, framing and colour range of the last step (the largest cut), for all.
+    xfem::SnapshotOptions picture;
+    std::unique_ptr<xfem::CutSolution> last;
+    double last_solved = 0;
+    if (png) {
+      start = xfem::cli::now();
+      last = std::make_unique<xfem::CutSolution>(solve_step(steps));
+      last_solved = xfem::cli::now() - start;
+      const xfem::DeformedBody frame = make_frame(*last);
+      picture.view = xfem::cut_view(frame.wound);
+      picture.colour_max = xfem::colour_top(frame.volume);
+      const auto& u = frame.volume.point_data.at("displacement");
+      std::array<double, 6> box{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+      for (Eigen::Index p = 0; p < frame.volume.points.rows(); ++p)
+        for (int i = 0; i < 3; ++i) {
+          const double x = frame.volume.points(p, i) + scale * u(static_cast<std::size_t>(p), i);
+          box[2 * i] = std::min(box[2 * i], x);
+          box[2 * i + 1] = std::max(box[2 * i + 1], x);
+        }
+      picture.frame = box;
+      picture.scale = scale;
+      picture.width = width;
+      picture.height = height;
+      picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
+    }
+    for (int k = 1; k <= steps; ++k) {
+      start = xfem::cli::now();
+      const xfem::CutSolution step = k == steps && last ? std::move(*last) : solve_step(k);
+      const double solved = k == steps && last ? last_solved : xfem::cli::now() - start;
+      const double write_start = xfem::cli::now();
+      const xfem::EnrichedMesh& em = step.em;
+      const xfem::DeformedBody frame = make_frame(step);
+      const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
       const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
       xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string());
       xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string());
       if (solutions) xfem::write_vector(step.u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string());
-      if (cuts) xfem::write_triangle_mesh(cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      if (png) {
+        picture.title = "t = " + g(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
+        xfem::write_snapshot(frame.volume, frame.wound, (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(),
+                             picture);
+      }
       collection.push_back({t[k - 1], 0, vtu});
       collection.push_back({t[k - 1], 1, vtp});
       const double written = xfem::cli::now() - write_start;
       xfem::cli::info("step " + std::to_string(k) + "/" + std::to_string(steps) + ", t = " + g(t[k - 1]) + " s: " +
-                      std::to_string(cut->mesh().triangles.rows()) + " cut triangles, " +
+                      std::to_string(triangles) + " cut triangles, " +
                       std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
                       std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(solved) +
                       " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
@@ -148,7 +192,7 @@ int main(int argc, char** argv) {
                       g(written) + " s");
       report["steps"].push_back({{"step", k},
                                  {"time", t[k - 1]},
-                                 {"cut_triangles", static_cast<long>(cut->mesh().triangles.rows())},
+                                 {"cut_triangles", triangles},
                                  {"partial", step.counts.partial},
                                  {"complete", step.counts.complete},
                                  {"sign", step.counts.sign},

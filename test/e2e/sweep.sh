@@ -43,6 +43,7 @@ expect_error "--steps -3" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --ste
 expect_error "missing.vtu" "$S/missing.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2
 sed 's/"value": \[0, 0, 0\]/"exact": {"rigid": {"above": {"translation": [0, 0, 0]}}}/' "$P" >"$S/exact.json"
 expect_error "prescribes an exact field" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/exact.json" --steps 2
+(unset DISPLAY; expect_error "rendering needs an X display" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 --png)
 touch "$S/file"
 "$SWEEP" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/file" 2>"$S/err.txt"
 [ $? -eq 1 ] && grep -qF "exists and is not a directory" "$S/err.txt" || fail "output onto a file: $(cat "$S/err.txt")"
@@ -57,6 +58,12 @@ touch "$S/file"
 [ ! -s "$S/quiet.txt" ] || fail "-q must silence the progress: $(cat "$S/quiet.txt")"
 [ "$(grep -c "<DataSet timestep=" "$S/frames/sweep.pvd")" -eq 10 ] || fail "sweep.pvd: 5 steps x (body, wound)"
 grep -q '"enriched_dofs"' "$S/report.json" || fail "report"
+# Pictures: one per step, under xvfb-run as the other pictures.
+if command -v xvfb-run >/dev/null; then
+  xvfb-run -a "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/pictures" --png \
+    --width 320 --height 240 || fail "--png"
+  [ -s "$S/pictures/step_001.png" ] && [ -s "$S/pictures/step_002.png" ] || fail "--png: pictures missing"
+fi
 # mtx_values FILE: the values of a Matrix Market array vector, one per line.
 mtx_values() { awk '!/^%/ { if (seen++) print $1 }' "$1"; }
 for k in 001 002 003 004 005; do
