@@ -72,7 +72,8 @@ int main(int argc, char** argv) {
                  "how each step is solved: schur (block elimination on the enriched DOFs with the uncut body's one "
                  "factorization: a dense Schur complement, cheap for small cuts), refactor (the uncut K_ss, reused, with "
                  "the enriched rows and columns, factorized anew: cheaper from a few hundred enriched DOFs on) or auto "
-                 "(default: schur up to " + std::to_string(xfem::kSchurMaxEnriched) + " enriched DOFs); same solution")
+                 "(default: schur while the enriched DOFs times one solve with the factor take less than the factorization "
+                 "did); the same solution either way")
       ->check(CLI::IsMember({"auto", "schur", "refactor"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
@@ -114,6 +115,7 @@ int main(int argc, char** argv) {
                                {"assemble_seconds", body.assemble_seconds},
                                {"analyze_seconds", body.factor->analyze_seconds},
                                {"factor_seconds", body.factor->factor_seconds},
+                               {"solve_seconds", body.solve_seconds},
                                {"seconds", setup}};
     report["steps"] = xfem::Json::array();
     std::vector<xfem::CollectionEntry> collection;

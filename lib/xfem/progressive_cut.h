@@ -32,6 +32,7 @@ struct UncutBody {
   SparseMatrix K_ss;               ///< the free original DOFs' block, lower triangle (for CutSolver::Refactor)
   Eigen::VectorXd g_s;             ///< f_s - K_sc u_c
   double assemble_seconds = 0;
+  double solve_seconds = 0;        ///< one solve with `factor` (for CutSolver::Auto)
 };
 
 /// Assembles the uncut body's system for `problem` and factorizes K_ss. Throws xfem::Error for a
@@ -47,9 +48,9 @@ UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering 
 ///             for thousands of enriched DOFs;
 ///   Refactor  the uncut body's K_ss (reused, not reassembled) with the enriched rows and columns
 ///             appended, factorized anew by CHOLMOD: the cost of one sparse factorization;
-///   Auto      Schur up to `kSchurMaxEnriched` enriched DOFs, else Refactor.
+///   Auto      Schur when (enriched DOFs) x (the time of one solve with the uncut factor, measured
+///             once) is below the time the uncut factorization took, else Refactor.
 enum class CutSolver { Auto, Schur, Refactor };
-constexpr long kSchurMaxEnriched = 300;
 
 /// One cut of a sweep solved on the factorized uncut body.
 struct CutSolution {
