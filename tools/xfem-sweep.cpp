@@ -42,9 +42,10 @@ int main(int argc, char** argv) {
       "Progressive cutting: the cut of a blade's sweep (a cut surface whose triangles carry the cell array 'time',\n"
       "e.g. from xfem-mesh cut-sweep) solved at K times t_k = t0 + k (t1 - t0) / K, k = 1..K, the cut at t_k being\n"
       "the triangles with time <= t_k. The uncut body is assembled and factorized once (CHOLMOD); each step\n"
-      "classifies and enriches the body, assembles only the tets with enriched DOFs and solves by block elimination\n"
-      "on the enriched DOFs (Schur complement with the one factorization): the same solution as xfem-classify,\n"
-      "-enrich, -assemble and -solve on that cut, at the cost of the cut alone. Writes per step\n"
+      "classifies and enriches the body, assembles only the tets with enriched DOFs and solves for the enriched DOFs\n"
+      "by block elimination (a Schur complement formed with the one factorization) while the cut is small, else by a\n"
+      "new factorization of the uncut K_ss with the enriched rows appended (--solver): the same solution as\n"
+      "xfem-classify, -enrich, -assemble and -solve on that cut (docs/PERFORMANCE.md: the cost). Writes per step\n"
       "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");

@@ -2,7 +2,11 @@
 // Progressive cutting: the standard block does not change with the cut, and the block elimination
 // on the enriched DOFs gives the whole system's solution.
 #include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <string>
 
 #include "xfem/assembly.h"
 #include "xfem/box_mesh.h"
@@ -12,6 +16,7 @@
 #include "xfem/cut_surface.h"
 #include "xfem/dirichlet.h"
 #include "xfem/error.h"
+#include "xfem/paraview_collection.h"
 #include "xfem/progressive_cut.h"
 #include "xfem/schur_solver.h"
 
@@ -189,4 +194,16 @@ TEST_CASE("cut sweep: times, the cut at a time, step times", "[cut_sweep]") {
   CHECK(q.points.rowwise().norm().maxCoeff() <= 1.0 + 0.2 + 1e-12);
   CHECK_THROWS_WITH(xfem::cut_sweep(path, 0.5, {1, 0, 0}, 0, 0.25, 1), Catch::Contains("the blade points along the path"));
   CHECK_THROWS_WITH(xfem::cut_sweep(path, -1, {0, 0, -1}, 0, 0.25, 1), "the blade's depth must be positive");
+}
+
+TEST_CASE("paraview collection: one DataSet per entry with its time and part", "[cut_sweep]") {
+  const std::string path = "collection_test.pvd";
+  xfem::write_paraview_collection({{0.5, 0, "step_001.vtu"}, {0.5, 1, "a&b.vtp"}, {1.0, 0, "step_002.vtu"}}, path);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("<VTKFile type=\"Collection\"") != std::string::npos);
+  CHECK(text.find("<DataSet timestep=\"0.5\" part=\"0\" file=\"step_001.vtu\"/>") != std::string::npos);
+  CHECK(text.find("<DataSet timestep=\"0.5\" part=\"1\" file=\"a&amp;b.vtp\"/>") != std::string::npos);
+  CHECK(text.find("<DataSet timestep=\"1\" part=\"0\" file=\"step_002.vtu\"/>") != std::string::npos);
+  std::remove(path.c_str());
 }
