@@ -12,6 +12,7 @@ packages=(
   libgmsh-dev gmsh                                 # .msh input (gmsh's library), the gmsh pipeline's mesher
   catch2 libcli11-dev nlohmann-json3-dev           # tests, arguments, JSON
   xvfb xauth gnuplot-nox python3                   # headless PNG snapshots, plots, tables
+  imagemagick                                      # convert: the sweep's PNG frames into an animated GIF
   time                                             # GNU /usr/bin/time: peak memory in bench/bench.py
   clang libclang-rt-14-dev                         # make sanitize (ASan, UBSan) and make fuzz (libFuzzer)
 )

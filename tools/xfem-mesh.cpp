@@ -7,6 +7,7 @@
 #include "xfem/box_mesh.h"
 #include "xfem/cli.h"
 #include "xfem/cut_generation.h"
+#include "xfem/cut_sweep.h"
 #include "xfem/error.h"
 #include "xfem/organ_shape.h"
 #include "xfem/unstructured_mesh.h"
@@ -156,6 +157,40 @@ int main(int argc, char** argv) {
                         "cut-merge upper.vtp lower.vtp -o two_pieces.vtp", out);
   merge->add_option("inputs", merge_inputs, "cut surfaces (.vtp/.vtk/.stl/.obj/.off)")->required()->expected(2, -1);
 
+  std::vector<double> sweep_path;
+  V3 arc_centre{0, 0, 0}, arc_axis{0, 0, 1}, down{0, 0, -1};
+  std::array<double, 2> arc_angles{0, 0};
+  double arc_radius = 0, depth = 0, tilt = 0, resolution = 0, duration = 1;
+  auto* sweep = command(app, "cut-sweep", "a blade's sweep: a segment hanging from a point moving along a polyline or a "
+                                          "circular arc; cell array 'time' = when the blade makes each triangle "
+                                          "(xfem-sweep; docs/FORMATS.md)",
+                        "cut-sweep --arc-centre 0 0.09 0.05 --arc-radius 0.09 --arc-angles -150 -30 --depth 0.06 "
+                        "--resolution 0.003 -o sweep.vtp", out);
+  auto* op = sweep->add_option("--path", sweep_path, "the blade's top end moves along the polyline X1 Y1 Z1 X2 Y2 Z2 ... "
+                                                     "(m, at least 2 points)");
+  auto* oa = sweep->add_option("--arc-centre,--arc-center", arc_centre, "or along a circular arc about this centre, m");
+  sweep->add_option("--arc-radius", arc_radius, "the arc's radius, m")->check(xfem::cli::positive());
+  sweep->add_option("--arc-angles", arc_angles, "the arc from angle A0 to A1, degrees, counter-clockwise about --arc-axis "
+                                                "from the plane direction closest to +x");
+  sweep->add_option("--arc-axis", arc_axis, "the arc's axis (default 0 0 1: a horizontal arc)");
+  sweep->add_option("--depth", depth, "the blade's length, m")->required()->check(xfem::cli::positive());
+  sweep->add_option("--down", down, "the blade's direction from its top end (default 0 0 -1)");
+  sweep->add_option("--tilt", tilt, "the blade turned by this angle about the path's tangent, degrees (default 0)")
+      ->check(xfem::cli::range(-89.0, 89.0));
+  sweep->add_option("--resolution", resolution, "triangle size along the path and the blade, m")->required()
+      ->check(xfem::cli::positive());
+  sweep->add_option("--duration", duration, "the time at the end of the path, s (default 1); the blade moves at constant "
+                                            "speed")->check(xfem::cli::positive());
+  op->excludes(oa);
+  sweep->parse_complete_callback([&] {
+    if (!*op && !*oa) throw CLI::RequiredError("cut-sweep: --path (or --arc-centre with --arc-radius and --arc-angles)");
+    if (*op && (sweep_path.size() < 6 || sweep_path.size() % 3 != 0))
+      throw CLI::ValidationError("--path", "needs X Y Z of at least 2 points (a multiple of 3 numbers), got " +
+                                               std::to_string(sweep_path.size()) + " numbers");
+    if (*oa && (sweep->count("--arc-radius") == 0 || sweep->count("--arc-angles") == 0))
+      throw CLI::RequiredError("--arc-centre needs --arc-radius and --arc-angles");
+  });
+
   return xfem::cli::run(*tool, argc, argv, [&] {
     const bool mesh_out = box->parsed() || ubox->parsed() || organ->parsed() || surf->parsed();
     xfem::cli::check_output(out, mesh_out ? std::vector<std::string>{".vtu"} : std::vector<std::string>{".vtp", ".vtu"});
@@ -205,6 +240,19 @@ int main(int argc, char** argv) {
       write_cut(xfem::cut_disc(vec(center), vec(normal), radius, rings), out);
     } else if (zigzag->parsed()) {
       write_cut(xfem::cut_zigzag({zz_lo[0], zz_lo[1]}, {zz_hi[0], zz_hi[1]}, zz_z0, zz_amplitude, folds, divisions[0]), out);
+    } else if (sweep->parsed()) {
+      xfem::BladePath path;
+      for (std::size_t k = 0; k + 2 < sweep_path.size(); k += 3) {
+        check_extent({sweep_path[k], sweep_path[k + 1], sweep_path[k + 2]}, "--path");
+        path.polyline.emplace_back(sweep_path[k], sweep_path[k + 1], sweep_path[k + 2]);
+      }
+      check_extent(arc_centre, "--arc-centre");
+      path.centre = vec(arc_centre);
+      path.axis = vec(arc_axis);
+      path.radius = arc_radius;
+      path.a0 = arc_angles[0];
+      path.a1 = arc_angles[1];
+      write_cut(xfem::cut_sweep(path, depth, vec(down), tilt, resolution, duration), out);
     } else if (merge->parsed()) {
       std::vector<xfem::TriangleMesh> pieces;
       for (const auto& in : merge_inputs) {

@@ -180,7 +180,7 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   const Eigen::Index np = deformed.points.rows(), nt = deformed.tets.rows();
   const auto& u = require_array(deformed.point_data, "displacement", "point", 3, np, "deformed mesh", "deformed_body");
   const auto& vm = require_array(deformed.cell_data, "von_mises", "cell", 1, nt, "deformed mesh", "deformed_body");
-  const CutView view = cut_view(wound);
+  const CutView view = o.view ? *o.view : cut_view(wound);
 
   // 1. The deformed split mesh; its outer surface includes both faces of the opened cut. An
   // interior cut is shown by clipping away the half of the body between it and the eye.
@@ -220,7 +220,7 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   const vtkIdType faces = surface->GetOutput()->GetNumberOfCells();
 
   // 2. Colours: viridis from 0 to the 95th percentile of the cells' von Mises stress.
-  const double top = colour_top(deformed);
+  const double top = o.colour_max > 0 ? o.colour_max : colour_top(deformed);
   auto lut = viridis(top);
   auto mapper = Ptr<vtkPolyDataMapper>::New();
   mapper->SetInputConnection(surface->GetOutputPort());
@@ -289,6 +289,7 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   // corners fit with a 5 % margin. Parallel, so that the picture does not depend on a distance.
   double b[6];
   surface->GetOutput()->GetBounds(b);
+  if (o.frame) std::copy(o.frame->begin(), o.frame->end(), b);
   const Eigen::Vector3d centre((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
   const Eigen::Vector3d look = -view.eye;
   const Eigen::Vector3d world_up = std::abs(look.z()) < 0.95 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
@@ -353,7 +354,8 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   overlay->AddActor2D(text(">= " + pascals(top), x1 + 0.05, y1 - 0.01, font, VTK_TEXT_LEFT));
   overlay->AddActor2D(text("von Mises\nstress", x0, y1 + 0.04, font, VTK_TEXT_LEFT));
   std::string caption = o.title.empty() ? std::string() : o.title + "\n";
-  caption += "colour: von Mises stress, 0 to " + pascals(top) + " (95th percentile of the cells; above: yellow)";
+  caption += "colour: von Mises stress, 0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
+                                                                   : std::string(" (95th percentile of the cells; above: yellow)"));
   if (view.has_cut) caption += ", wound faces red";
   if (section) caption += "\nsection through the cut's centre, the half towards the viewer removed";
   caption += "\ndisplacements x " + format("%g", o.scale) + ", max |u| = " +

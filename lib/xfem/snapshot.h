@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <array>
+#include <optional>
 #include <string>
 
 #include "xfem/mesh.h"
@@ -40,6 +42,12 @@ struct SnapshotOptions {
   /// 20,000 triangles (a finer mesh would turn grey), On / Off always / never.
   enum class Edges { Auto, On, Off };
   Edges edges = Edges::Auto;
+  /// For a series of pictures with one camera and one colour range (xfem-sweep --png): the view
+  /// to use instead of cut_view(wound), the top of the colour range instead of colour_top (> 0),
+  /// and the box (xmin, xmax, ymin, ymax, zmin, zmax, m) to frame instead of the drawn bounds.
+  std::optional<CutView> view;
+  double colour_max = 0;
+  std::optional<std::array<double, 6>> frame;
 };
 
 /// The colour range the snapshot uses for von Mises stress (Pa): 0 to the 95th percentile of the

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "xfem/classification.h"
+#include "xfem/dirichlet.h"
+#include "xfem/enriched_mesh.h"
+#include "xfem/problem.h"
+#include "xfem/schur_solver.h"
+
+namespace xfem {
+
+/// The enriched mesh of `mesh` classified as `c` against `cut` (null for no cut), in memory: what
+/// xfem-classify + xfem-enrich write and read_enriched_mesh reads back, without the files.
+EnrichedMesh enriched_mesh(const TetMesh& mesh, const Classification& c, std::shared_ptr<const CutSurface> cut);
+
+/// The uncut body, assembled and factorized once: cutting changes neither K's block of the
+/// original DOFs nor f nor the Dirichlet data (DESIGN.md, "Cutting does not touch the standard
+/// block"), so every cut of a sweep reuses them.
+struct UncutBody {
+  TetMesh mesh;                    ///< the body (its arrays kept, for the Dirichlet selectors)
+  Problem problem;
+  std::vector<long> fixed;         ///< constrained scalar DOFs (original DOFs only)
+  std::vector<double> fixed_values;
+  Eigen::VectorXd constrained;     ///< 3 NP: the prescribed values at `fixed`, 0 elsewhere
+  std::vector<int> free_dofs;      ///< reduced index -> scalar original DOF
+  std::vector<int> reduced;        ///< scalar original DOF -> reduced index, -1 when constrained
+  std::unique_ptr<CholeskyFactor> factor;  ///< of K_ss, the free original DOFs' block
+  Eigen::VectorXd w;               ///< K_ss^-1 (f_s - K_sc u_c): the uncut body's free displacements
+  SparseMatrix K_ss;               ///< the free original DOFs' block, lower triangle (for CutSolver::Refactor)
+  Eigen::VectorXd g_s;             ///< f_s - K_sc u_c
+  double assemble_seconds = 0;
+  double solve_seconds = 0;        ///< one solve with `factor` (for CutSolver::Auto)
+};
+
+/// Assembles the uncut body's system for `problem` and factorizes K_ss. Throws xfem::Error for a
+/// Dirichlet condition with an exact field (its values depend on the node's side of the cut, so
+/// the standard block would change with the cut) and for an unconstrained body (naming the
+/// condition that is missing, as xfem-solve does).
+UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering ordering = Ordering::Metis);
+
+/// How a cut's system is solved (both give the same solution up to round-off):
+///   Schur     block elimination on the enriched DOFs with the uncut body's one factorization: the
+///             dense Schur complement S costs about (enriched DOFs) solves with the factor and
+///             (enriched DOFs)^3 / 3 flops, cheap for a small cut, dearer than a new factorization
+///             for thousands of enriched DOFs;
+///   Refactor  the uncut body's K_ss (reused, not reassembled) with the enriched rows and columns
+///             appended, factorized anew by CHOLMOD: the cost of one sparse factorization;
+///   Auto      Schur when (enriched DOFs) x (the time of one solve with the uncut factor, measured
+///             once) is below the time the uncut factorization took, else Refactor.
+enum class CutSolver { Auto, Schur, Refactor };
+
+/// One cut of a sweep solved on the factorized uncut body.
+struct CutSolution {
+  EnrichedMesh em;                 ///< the classified, enriched mesh (as xfem-enrich would write it)
+  Classification::Counts counts;
+  Eigen::VectorXd u;               ///< 3N, m: the full solution, as xfem-solve would write it
+  long enriched_tets = 0;          ///< tets with enriched DOFs (the only ones assembled)
+  long enriched_dofs = 0;          ///< scalar enriched DOFs solved for (size of the Schur complement)
+  long unsupported_dofs = 0;       ///< enriched DOFs with a zero row of K: fixed to 0 (as xfem-solve does)
+  double classify_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
+  bool schur_used = false;         ///< which solver ran (Auto decides per cut)
+  SchurStats schur;
+};
+
+/// Classifies the body against `cut`, numbers the DOFs, assembles only the tets with enriched DOFs
+/// (their K_ee, K_es; f_e = 0 since loads act on original DOFs) and solves by block elimination
+/// on the enriched DOFs with body.factor, or by a new factorization (`solver`). The result equals xfem-classify, -enrich, -assemble and
+/// -solve on the same cut up to round-off. Throws xfem::Error when a piece cut off the body has no
+/// Dirichlet condition.
+CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut,
+                      const ClassifyOptions& options = {}, CutSolver solver = CutSolver::Auto);
+
+}  // namespace xfem

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+// Progressive cutting (issue 20): a blade's sweep as a time series, the uncut body factorized once
+// and each step solved on the enriched DOFs alone (DESIGN.md, "Cutting does not touch the
+// standard block").
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "xfem/cli.h"
+#include "xfem/cut_surface.h"
+#include "xfem/cut_sweep.h"
+#include "xfem/deformed_mesh.h"
+#include "xfem/element_split.h"
+#include "xfem/error.h"
+#include "xfem/fingerprint.h"
+#include "xfem/matrix_market.h"
+#include "xfem/paraview_collection.h"
+#include "xfem/problem.h"
+#include "xfem/progressive_cut.h"
+#include "xfem/snapshot.h"
+#include "xfem/version.h"
+#include "xfem/vtk_io.h"
+
+namespace {
+std::string g(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+std::string numbered(const std::string& stem, int k, const std::string& ext) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%03d", k);
+  return stem + buf + ext;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  auto tool = xfem::cli::make_tool(
+      "xfem-sweep",
+      "Progressive cutting: the cut of a blade's sweep (a cut surface whose triangles carry the cell array 'time',\n"
+      "e.g. from xfem-mesh cut-sweep) solved at K times t_k = t0 + k (t1 - t0) / K, k = 1..K, the cut at t_k being\n"
+      "the triangles with time <= t_k. The uncut body is assembled and factorized once (CHOLMOD); each step\n"
+      "classifies and enriches the body, assembles only the tets with enriched DOFs and solves for the enriched DOFs\n"
+      "by block elimination (a Schur complement formed with the one factorization) while the cut is small, else by a\n"
+      "new factorization of the uncut K_ss with the enriched rows appended (--solver): the same solution as\n"
+      "xfem-classify, -enrich, -assemble and -solve on that cut (docs/PERFORMANCE.md: the cost). Writes per step\n"
+      "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
+      "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
+      "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
+  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "auto";
+  int steps = 0, width = 1200, height = 900;
+  double scale = 1.0;
+  bool solutions = false, cuts = false, png = false;
+  auto& app = tool->app;
+  app.add_option("body", body_path, "tetrahedral mesh of the uncut body (.vtu/.vtk/.msh)")->required();
+  app.add_option("-c,--cut", cut_path, "the sweep: cut triangles with cell array 'time' in s (.vtp/.vtu/.vtk)")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material, integration, Dirichlet conditions with fixed "
+                                               "values, Neumann, body force)")->required();
+  app.add_option("--steps", steps, "number of steps K (>= 1)")->required();
+  app.add_option("-o,--output", dir, "directory of the frames (created; files of the same names are replaced)")->required();
+  app.add_option("--report", report_path, "JSON report: the factorization once, per step the time, counts and DOFs");
+  app.add_flag("--solutions", solutions, "also write each step's solution DIR/u_NNN.mtx (3N values, m, as xfem-solve's u.mtx)");
+  app.add_flag("--cuts", cuts, "also write each step's cut DIR/cut_NNN.vtp (the triangles with time <= t_k)");
+  app.add_flag("--png", png, "also render each step as DIR/step_NNN.png with one camera and one colour range for the "
+                             "whole sweep (those of the last step; needs an X display: run under xvfb-run -a)");
+  app.add_option("--scale", scale, "displacement magnification in the pictures, dimensionless")
+      ->check(xfem::cli::range(1e-6, 1e6));
+  app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
+  app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
+  app.add_option("--solver", solver,
+                 "how each step is solved: schur (block elimination on the enriched DOFs with the uncut body's one "
+                 "factorization: a dense Schur complement, cheap for small cuts), refactor (the uncut K_ss, reused, with "
+                 "the enriched rows and columns, factorized anew: cheaper from a few hundred enriched DOFs on) or auto "
+                 "(default: schur while the enriched DOFs times one solve with the factor take less than the factorization "
+                 "did); the same solution either way")
+      ->check(CLI::IsMember({"auto", "schur", "refactor"}));
+  app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
+      ->check(CLI::IsMember({"metis", "amd"}));
+  return xfem::cli::run(*tool, argc, argv, [&] {
+    if (steps < 1) throw xfem::Error("--steps " + std::to_string(steps) + ": the number of steps must be at least 1");
+    if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
+      throw xfem::Error(dir + ": exists and is not a directory");
+    if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
+    if (png && (!std::getenv("DISPLAY") || !*std::getenv("DISPLAY")))
+      throw xfem::Error("--png: rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
+    std::vector<std::string> warnings;
+    const xfem::TetMesh mesh = xfem::read_tet_mesh(body_path, &warnings);
+    const xfem::TriangleMesh sweep = xfem::read_triangle_mesh(cut_path, &warnings);
+    for (const auto& w : warnings) xfem::cli::warn(w);
+    const std::vector<double> times = xfem::cut_times(sweep, cut_path);
+    const std::vector<double> t = xfem::step_times(times, steps);
+    const xfem::Problem problem = xfem::read_problem(problem_path);
+    std::filesystem::create_directories(dir);
+
+    double start = xfem::cli::now();
+    const xfem::UncutBody body = xfem::factorize_uncut(mesh, problem, ordering == "amd" ? xfem::Ordering::Amd
+                                                                                         : xfem::Ordering::Metis);
+    const double setup = xfem::cli::now() - start;
+    xfem::cli::info("uncut body: " + std::to_string(body.free_dofs.size()) + " free DOFs, assembled in " +
+                    g(body.assemble_seconds) + " s, factorized once (CHOLMOD, " + body.factor->ordering + ", " +
+                    std::to_string(static_cast<long>(body.factor->factor_nonzeros)) + " non-zeros in L) in " +
+                    g(body.factor->analyze_seconds + body.factor->factor_seconds) + " s");
+    xfem::Json report;
+    report["generator"] = std::string("xfem-sweep ") + xfem::version;
+    report["body"] = body_path;
+    report["cut"] = cut_path;
+    report["problem"] = problem_path;
+    report["fingerprints"] = xfem::provenance_json({{"body", xfem::fingerprint(mesh)},
+                                                    {"cut", xfem::fingerprint(sweep)},
+                                                    {"problem", xfem::fingerprint_json_file(problem_path)}});
+    report["factorization"] = {{"free_dofs", static_cast<long>(body.free_dofs.size())},
+                               {"ordering", body.factor->ordering},
+                               {"factor_nonzeros", static_cast<long>(body.factor->factor_nonzeros)},
+                               {"assemble_seconds", body.assemble_seconds},
+                               {"analyze_seconds", body.factor->analyze_seconds},
+                               {"factor_seconds", body.factor->factor_seconds},
+                               {"solve_seconds", body.solve_seconds},
+                               {"seconds", setup}};
+    report["steps"] = xfem::Json::array();
+    std::vector<xfem::CollectionEntry> collection;
+    const auto solve_step = [&](int k) {
+      auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
+      try {
+        return xfem::solve_cut(body, cut, {},
+                               solver == "schur"      ? xfem::CutSolver::Schur
+                               : solver == "refactor" ? xfem::CutSolver::Refactor
+                                                      : xfem::CutSolver::Auto);
+      } catch (const xfem::Error& e) {
+        std::string m = e.what();
+        if (m.rfind("cut: ", 0) == 0) m = m.substr(5);
+        throw xfem::Error(cut_path + ": step " + std::to_string(k) + " (t = " + g(t[k - 1]) + " s): " + m);
+      }
+    };
+    const auto make_frame = [&](const xfem::CutSolution& step) {
+      const xfem::EnrichedMesh& em = step.em;
+      const xfem::SplitMesh split = em.cut ? xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(),
+                                                              em.front.segments())
+                                           : xfem::unsplit_mesh(em.mesh, em.side);
+      return xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, step.u), problem.E, problem.nu);
+    };
+    // Pictures: the camera, framing and colour range of the last step (the largest cut), for all.
+    xfem::SnapshotOptions picture;
+    std::unique_ptr<xfem::CutSolution> last;
+    double last_solved = 0;
+    if (png) {
+      start = xfem::cli::now();
+      last = std::make_unique<xfem::CutSolution>(solve_step(steps));
+      last_solved = xfem::cli::now() - start;
+      const xfem::DeformedBody frame = make_frame(*last);
+      picture.view = xfem::cut_view(frame.wound);
+      picture.colour_max = xfem::colour_top(frame.volume);
+      const auto& u = frame.volume.point_data.at("displacement");
+      std::array<double, 6> box{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+      for (Eigen::Index p = 0; p < frame.volume.points.rows(); ++p)
+        for (int i = 0; i < 3; ++i) {
+          const double x = frame.volume.points(p, i) + scale * u(static_cast<std::size_t>(p), i);
+          box[2 * i] = std::min(box[2 * i], x);
+          box[2 * i + 1] = std::max(box[2 * i + 1], x);
+        }
+      picture.frame = box;
+      picture.scale = scale;
+      picture.width = width;
+      picture.height = height;
+      picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
+    }
+    for (int k = 1; k <= steps; ++k) {
+      start = xfem::cli::now();
+      const xfem::CutSolution step = k == steps && last ? std::move(*last) : solve_step(k);
+      const double solved = k == steps && last ? last_solved : xfem::cli::now() - start;
+      const double write_start = xfem::cli::now();
+      const xfem::EnrichedMesh& em = step.em;
+      const xfem::DeformedBody frame = make_frame(step);
+      const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
+      const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
+      xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string());
+      xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string());
+      if (solutions) xfem::write_vector(step.u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string());
+      if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      if (png) {
+        picture.title = "t = " + g(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
+        xfem::write_snapshot(frame.volume, frame.wound, (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(),
+                             picture);
+      }
+      collection.push_back({t[k - 1], 0, vtu});
+      collection.push_back({t[k - 1], 1, vtp});
+      const double written = xfem::cli::now() - write_start;
+      xfem::cli::info("step " + std::to_string(k) + "/" + std::to_string(steps) + ", t = " + g(t[k - 1]) + " s: " +
+                      std::to_string(triangles) + " cut triangles, " +
+                      std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
+                      std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(solved) +
+                      " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
+                      (step.schur_used ? ", Schur " : ", refactorization ") + g(step.solve_seconds) + "), written in " +
+                      g(written) + " s");
+      report["steps"].push_back({{"step", k},
+                                 {"time", t[k - 1]},
+                                 {"cut_triangles", triangles},
+                                 {"partial", step.counts.partial},
+                                 {"complete", step.counts.complete},
+                                 {"sign", step.counts.sign},
+                                 {"branch", step.counts.branch},
+                                 {"n", em.n},
+                                 {"dofs", 3 * em.n},
+                                 {"enriched_dofs", step.enriched_dofs},
+                                 {"unsupported_dofs", step.unsupported_dofs},
+                                 {"enriched_tets", step.enriched_tets},
+                                 {"classify_seconds", step.classify_seconds},
+                                 {"assemble_seconds", step.assemble_seconds},
+                                 {"solver", step.schur_used ? "schur" : "refactor"},
+                                 {"schur_seconds", step.schur.schur_seconds},
+                                 {"dense_seconds", step.schur.dense_seconds},
+                                 {"solve_seconds", step.solve_seconds},
+                                 {"seconds", solved},
+                                 {"write_seconds", written}});
+      if (step.unsupported_dofs > 0)
+        xfem::cli::detail(std::to_string(step.unsupported_dofs) + " enriched DOFs without support fixed to 0");
+    }
+    xfem::write_paraview_collection(collection, (std::filesystem::path(dir) / "sweep.pvd").string());
+    if (!report_path.empty()) xfem::write_json(report, report_path);
+  });
+}
