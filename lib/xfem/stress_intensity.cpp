@@ -46,12 +46,9 @@ Eigen::Matrix3d stress(const Eigen::Matrix3d& grad, const Lame& m) {
 
 // The integration points of one tet and the solution's gradient at each, computed once: the
 // domains of neighbouring front points overlap.
-// Each point's continuous crack-tip coordinates (crack_front.h) and the frame at its foot on the
-// front, for the auxiliary fields.
 struct TetPoints {
   PointRule rule;
   std::vector<Eigen::Matrix3d> grad_u, sigma;
-  std::vector<TipCoordinates> tip;
 };
 
 }  // namespace
@@ -84,7 +81,6 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen
       tp.rule.side[k] = side;
       tp.grad_u.push_back(displacement_gradient_at(em, t, tp.rule.x[k], side, u));
       tp.sigma.push_back(stress(tp.grad_u.back(), lm));
-      tp.tip.push_back(em.front.coordinates(tp.rule.x[k]));
     }
     return cache.emplace(t, std::move(tp)).first->second;
   };
@@ -172,30 +168,21 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen
                   "spacing or the radius is smaller than the elements there: increase them)");
     f.q_trace = Q;
 
-    // The auxiliary fields: Williams mode m with unit K as a combination of the crack-tip
-    // functions, in curvilinear form: at x, the functions of x's continuous crack-tip coordinates
-    // (measured from x's foot on the front) with the coefficients of the frame at that foot. On a
-    // straight front this is the Williams field of the point's frame; on a curved one the
-    // auxiliary crack follows the real front instead of its tangent line at the point (with the
-    // tangent line's field, K_I of a penny-shaped crack of radius a came out 1.3 % higher with a
-    // tangential half-width of a / 3, 2.9 % higher with a / 2: docs/VERIFICATION.md). The
-    // gradient drops the term of the coefficients' variation along the front, O(r / curvature
-    // radius) relative.
-    const auto coefficients = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-      WilliamsField aux;
-      aux.a = a;
-      aux.b = b;
-      aux.E = E;
-      aux.nu = nu;
-      std::array<Eigen::Matrix<double, 3, 4>, 3> C;
-      for (int m = 0; m < 3; ++m) {
-        aux.K1 = m == 0;
-        aux.K2 = m == 1;
-        aux.K3 = m == 2;
-        C[m] = aux.branch_coefficients();
-      }
-      return C;
-    };
+    // The auxiliary fields as combinations of the crack-tip functions in the point's frame.
+    WilliamsField aux;
+    aux.origin = f.x;
+    aux.a = f.a;
+    aux.b = f.b;
+    aux.E = E;
+    aux.nu = nu;
+    std::array<Eigen::Matrix<double, 3, 4>, 3> C;
+    for (int m = 0; m < 3; ++m) {
+      aux.K1 = m == 0;
+      aux.K2 = m == 1;
+      aux.K3 = m == 2;
+      C[m] = aux.branch_coefficients();
+    }
+    const CrackTipFrame frame = aux.frame();
     Eigen::Vector3d I = Eigen::Vector3d::Zero();
     for (int t = 0; t < em.tets(); ++t) {
       double qmin = 1.0, qmax = 0.0;
@@ -212,8 +199,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen
       const TetPoints& tp = points_of(t);
       for (int i = 0; i < tp.rule.size(); ++i) {
         const Eigen::Vector3d& x = tp.rule.x[i];
-        const BranchValues F = branch_functions(tp.tip[i], tp.rule.side[i]);
-        const std::array<Eigen::Matrix<double, 3, 4>, 3> C = coefficients(tp.tip[i].a, tp.tip[i].b);
+        const BranchValues F = branch_functions(frame, x, tp.rule.side[i]);
         const Eigen::Matrix3d& Gu = tp.grad_u[i];
         const Eigen::Matrix3d& S = tp.sigma[i];
         const Eigen::Vector3d Gu_a = Gu * f.a, S_gq = S * gq;
