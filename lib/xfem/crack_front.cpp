@@ -94,8 +94,6 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
   TipCoordinates out;
   out.xa = a.dot(v);
   out.xb = b.dot(v);
-  out.a = a;
-  out.b = b;
   out.grad.row(0) = a.transpose();
   out.grad.row(1) = b.transpose();
   if (inside) {

@@ -29,7 +29,6 @@ struct CrackTipFrame {
 struct TipCoordinates {
   double xa = 0.0, xb = 0.0;          ///< metres
   Eigen::Matrix<double, 2, 3> grad;   ///< row 0: grad xa, row 1: grad xb (global coordinates)
-  Eigen::Vector3d a = Eigen::Vector3d::UnitX(), b = Eigen::Vector3d::UnitY();  ///< the frame at the foot P
 };
 
 /// The front's segments joined end to end (p1 of one = p0 of the next, within 1e-9 of the front's
