@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
                                     "reference mesh (.vtu/.vtk/.msh); point array 'cut_side' gives the side of duplicated nodes");
   auto* exact_option = app.add_option("--exact", exact_path,
                                       "exact field instead of a reference: JSON {\"williams\": {origin, ahead, normal, K1, K2, "
-                                      "K3, E, nu}}, {\"rigid\": {above, below}} or {\"linear\": {gradient, translation}} "
+                                      "K3, E, nu}}, {\"penny\": {centre, normal, radius, sigma, E, nu}}, {\"rigid\": {above, below}} or "
+                                      "{\"linear\": {gradient, translation}} "
                                       "(docs/FORMATS.md \"Exact fields\")");
   ref_option->excludes(exact_option);
   app.add_option("--samples", samples, "with --exact: oversampling points per tet for the L2/H1 errors (m^3 > N, "

@@ -118,8 +118,8 @@ RigidMotion parse_rigid_motion(const Node& n) {
 }
 
 ExactField parse_exact(const Node& n, const std::optional<std::pair<double, double>>& material) {
-  n.require_object({"williams", "rigid", "linear"});
-  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid, linear");
+  n.require_object({"williams", "rigid", "linear", "penny"});
+  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid, linear, penny");
   ExactField f;
   if (n.has("williams")) {
     const Node w = n.at("williams");
@@ -137,6 +137,20 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     W.E = w.has("E") ? w.at("E").number() : material->first;
     W.nu = w.has("nu") ? w.at("nu").number() : material->second;
     check_material(w, W.E, W.nu);
+  } else if (n.has("penny")) {
+    const Node w = n.at("penny");
+    w.require_object({"centre", "normal", "radius", "sigma", "E", "nu"});
+    f.kind = ExactField::Kind::Penny;
+    PennyField& P = f.penny;
+    if (w.has("centre")) P.centre = w.at("centre").vector3();
+    P.normal = unit(w.at("normal"));
+    P.radius = w.at("radius").number();
+    if (!(P.radius > 0)) w.at("radius").fail("must be positive, got " + short_number(P.radius));
+    P.sigma = w.at("sigma").number();
+    if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
+    P.E = w.has("E") ? w.at("E").number() : material->first;
+    P.nu = w.has("nu") ? w.at("nu").number() : material->second;
+    check_material(w, P.E, P.nu);
   } else if (n.has("linear")) {
     const Node l = n.at("linear");
     l.require_object({"gradient", "translation"});
