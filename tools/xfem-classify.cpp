@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
       "(docs/FORMATS.md, classified.vtu); degenerate geometry by the rules of docs/CLASSIFICATION.md.",
       "xfem-classify beam.vtu --cut cut.vtp -o classified.vtu --summary counts.json");
   std::string body, cut_path, output, summary;
-  double tip_radius = 0.0, tiny_support = 1e-8;
+  double tip_radius = 0.0, tiny_support = 1e-7;
   auto& app = tool->app;
   app.add_option("body", body, "tetrahedral mesh of the body (.vtu/.vtk, or gmsh .msh 2.2/4.x: its physical groups become point arrays group_<name>)")->required();
   app.add_option("-c,--cut", cut_path,
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
       ->check(xfem::cli::non_negative());
   app.add_option("--tiny-support", tiny_support,
                  "sign-enrich a node only if at least this fraction of its support's volume lies on the other "
-                 "side of the cut (dimensionless, default 1e-8, where xfem-solve starts to warn of a near-singular K; 1e-4 is common with iterative solvers but breaks the exact representation of a cut body: see docs/CLASSIFICATION.md)")
+                 "side of the cut (dimensionless, default 1e-7, a decade above where xfem-solve starts to warn of a near-singular K; 1e-4 is common with iterative solvers but breaks the exact representation of a cut body: see docs/CLASSIFICATION.md)")
       ->check(xfem::cli::range(0.0, 0.5));
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});

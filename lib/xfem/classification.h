@@ -22,7 +22,7 @@ struct ClassifyOptions {
   /// A node is sign enriched only if the part of its support on the other side of the cut is at
   /// least this fraction of the support's volume (below it the sign function is nearly zero and
   /// K near-singular: the enrichment is removed and counted as sign_tiny).
-  double tiny_support = 1e-8;
+  double tiny_support = 1e-7;
   /// Called with the fraction done in [0, 1] (may be empty).
   std::function<void(double)> progress;
 };
