@@ -274,7 +274,7 @@ LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
     throw Error(f_path + ": " + std::to_string(s.f.size()) + " rows, expected 3N = " + std::to_string(dofs) + kHint);
 
   const std::string d_path = join(dir, "dirichlet.mtx");
-  const SparseMatrix d = read_with_hint([&] { return read_matrix(d_path); });
+  const SparseMatrix d = read_with_hint([&] { return read_matrix(d_path, true); });
   if (d.rows() != dofs || d.cols() != 1)
     throw Error(d_path + ": " + std::to_string(d.rows()) + " x " + std::to_string(d.cols()) +
                 ", expected 3N x 1 = " + std::to_string(dofs) + " x 1" + kHint);

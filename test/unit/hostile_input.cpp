@@ -70,6 +70,15 @@ TEST_CASE("hostile: Matrix Market content that would be silently misread is refu
   CHECK_THROWS_WITH(
       xfem::read_matrix(scratch("upper.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n1 2 1\n")),
       Catch::Contains("upper.mtx: line 4: entry (1, 2) above the diagonal in a symmetric file"));
+  // dirichlet.mtx's rows must be strictly increasing (FORMATS.md): out of order or repeated is refused.
+  const std::string unsorted =
+      scratch("unsorted.mtx", "%%MatrixMarket matrix coordinate real general\n6 1 3\n1 1 0\n4 1 0.5\n2 1 0\n");
+  CHECK_THROWS_WITH(xfem::read_matrix(unsorted, true),
+                    Catch::Contains("unsorted.mtx: line 5: row 2 after row 4 (the rows must be strictly increasing)"));
+  CHECK(xfem::read_matrix(unsorted).nonZeros() == 3);  // K.mtx may come in any order
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("repeated.mtx", "%%MatrixMarket matrix coordinate real general\n6 1 2\n3 1 0\n3 1 0\n"), true),
+      Catch::Contains("repeated.mtx: line 4: row 3 after row 3"));
   // Trailing white space is fine.
   CHECK(xfem::read_vector(scratch("ok.mtx", "%%MatrixMarket matrix array real general\n2 1\n1\n2\n\n  \n")).size() == 2);
 }
