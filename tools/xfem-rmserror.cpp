@@ -96,8 +96,10 @@ int main(int argc, char** argv) {
     xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), mesh_path);
     xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
   };
-  const auto finite = [](double v, const char* what) {
-    if (!std::isfinite(v)) throw xfem::Error(std::string("the ") + what + " is not finite (overflow in the solution?)");
+  const auto finite = [&](double v, const char* what) {  // names the solution (or the mesh holding it)
+    if (!std::isfinite(v))
+      throw xfem::Error((solution.empty() ? mesh_path : solution) + ": the " + what +
+                        " is not finite (overflow in the solution?)");
   };
   return xfem::cli::run(*tool, argc, argv, [&] {
     if (!output.empty()) xfem::cli::check_output(output, {".json"}, true);

@@ -65,7 +65,21 @@ auto read_with_hint(Read read) -> decltype(read()) {
 long get_count(const Json& j, const char* key, const std::string& path) {
   if (!j.contains(key) || !j[key].is_number_integer() || j[key].get<long>() < 0)
     throw Error(path + ": key '" + key + "' missing or not a non-negative integer" + kHint);
+  // Matrices are indexed by int: 3 (np + ns + 4 nb) must stay below 2^31 (and not overflow here).
+  if (j[key].get<long>() > 200000000)
+    throw Error(path + ": key '" + key + "' = " + j[key].dump() + " is larger than supported (2e8)" + kHint);
   return j[key].get<long>();
+}
+
+// system.json must be an object whose optional `format` is a string and `coordinates` a boolean
+// (otherwise the JSON library's type error would surface instead of a plain message).
+Json read_system_json(const std::string& json_path) {
+  Json j = read_with_hint([&] { return read_json(json_path); });
+  if (!j.is_object()) throw Error(json_path + ": not a JSON object" + kHint);
+  if (j.contains("format") && !j["format"].is_string()) throw Error(json_path + ": key 'format' is not a string" + kHint);
+  if (j.contains("coordinates") && !j["coordinates"].is_boolean())
+    throw Error(json_path + ": key 'coordinates' is not true or false" + kHint);
+  return j;
 }
 
 }  // namespace
@@ -208,7 +222,7 @@ void write_linear_system(const LinearSystem& s, const std::string& dir, const st
 
 SystemFormat system_format(const std::string& dir) {
   const std::string json_path = join(dir, "system.json");
-  const Json j = read_with_hint([&] { return read_json(json_path); });
+  const Json j = read_system_json(json_path);
   const std::string format = j.value("format", std::string("matrix-market"));
   if (format == "petsc") return SystemFormat::Petsc;
   if (format == "matrix-market") return SystemFormat::MatrixMarket;
@@ -227,7 +241,7 @@ LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
   if (!std::filesystem::exists(json_path))
     throw Error(dir + ": no system.json, the marker xfem-assemble writes last: the directory is incomplete or not "
                 "a system (rerun xfem-assemble)");
-  const Json j = read_with_hint([&] { return read_json(json_path); });
+  const Json j = read_system_json(json_path);
   const SystemFormat format = system_format(dir);
   const bool binary = format == SystemFormat::Petsc;
   LinearSystem s;
@@ -274,7 +288,7 @@ LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
     throw Error(f_path + ": " + std::to_string(s.f.size()) + " rows, expected 3N = " + std::to_string(dofs) + kHint);
 
   const std::string d_path = join(dir, "dirichlet.mtx");
-  const SparseMatrix d = read_with_hint([&] { return read_matrix(d_path); });
+  const SparseMatrix d = read_with_hint([&] { return read_matrix(d_path, true); });
   if (d.rows() != dofs || d.cols() != 1)
     throw Error(d_path + ": " + std::to_string(d.rows()) + " x " + std::to_string(d.cols()) +
                 ", expected 3N x 1 = " + std::to_string(dofs) + " x 1" + kHint);

@@ -253,7 +253,7 @@ void write_symmetric_matrix(const SparseMatrix& K, const std::string& path) {
   });
 }
 
-SparseMatrix read_matrix(const std::string& path) {
+SparseMatrix read_matrix(const std::string& path, bool rows_increasing) {
   const std::string text = read_text(path);
   Scanner s{path, text.data(), text.data() + text.size()};
   const Header h = parse_header(s);
@@ -267,11 +267,16 @@ SparseMatrix read_matrix(const std::string& path) {
   check_claim(s, nnz, 6, "entries");
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(static_cast<std::size_t>(h.symmetric ? 2 * nnz : nnz));
+  long previous_row = -1;
   for (long k = 0; k < nnz; ++k) {
     const long i = s.number<long>("a row index") - 1, j = s.number<long>("a column index") - 1;
     const double v = s.real();
     if (i < 0 || i >= rows || j < 0 || j >= cols)
       throw Error(path + ": line " + std::to_string(s.line) + ": index out of range");
+    if (rows_increasing && i <= previous_row)
+      throw Error(path + ": line " + std::to_string(s.line) + ": row " + std::to_string(i + 1) + " after row " +
+                  std::to_string(previous_row + 1) + " (the rows must be strictly increasing)");
+    previous_row = i;
     if (h.symmetric && i < j)
       throw Error(path + ": line " + std::to_string(s.line) + ": entry (" + std::to_string(i + 1) + ", " +
                   std::to_string(j + 1) + ") above the diagonal in a symmetric file (only the lower triangle is stored)");

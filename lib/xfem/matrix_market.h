@@ -17,8 +17,10 @@ void write_symmetric_matrix(const SparseMatrix& K, const std::string& path);
 /// Reads a Matrix Market `coordinate real` matrix, `general` or `symmetric`. A symmetric file is
 /// returned as its full matrix (both triangles). Throws xfem::Error naming the file and line; also
 /// for a size line claiming more entries than the file holds (before allocating), extra values,
-/// a duplicated entry, an entry above the diagonal of a symmetric file.
-SparseMatrix read_matrix(const std::string& path);
+/// a duplicated entry, an entry above the diagonal of a symmetric file. With `rows_increasing`
+/// (a sparse column such as dirichlet.mtx, whose format requires it) an entry whose row does not
+/// follow the previous entry's row is refused too, naming its line.
+SparseMatrix read_matrix(const std::string& path, bool rows_increasing = false);
 
 /// Writes `v` as a Matrix Market `array real general` n x 1 vector. Atomic; "-" is stdout.
 /// `comments` (each starting with '%') go after the banner. Refuses non-finite values.

@@ -98,6 +98,7 @@ class Reader {
  private:
   template <class U, class T>
   void get(std::size_t offset, T* out, std::size_t n) const {
+    if (n == 0) return;  // `out` may be null then (an empty vector's data()): memcpy must not see it
     std::memcpy(out, bytes_.data() + offset, n * sizeof(U));
     U* u = reinterpret_cast<U*>(out);
     for (std::size_t k = 0; k < n; ++k) u[k] = swap(u[k]);

@@ -48,6 +48,7 @@
 
 #include "xfem/atomic_file.h"
 #include "xfem/boundary_groups.h"
+#include "xfem/vtk_xml_check.h"
 #include "xfem/error.h"
 #include "xfem/gmsh_io.h"
 
@@ -378,54 +379,6 @@ void check_legacy_sections(const std::string& path) {
   }
 }
 
-// VTK 9.1's XML reader divides by a zero block size (SIGFPE) and allocates whatever a corrupt
-// compressed-block header or a NumberOfPoints attribute claims. For appended raw data (what the
-// writers here produce) each array's header is checked against the file's size first.
-void check_xml_sizes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t appended = std::min(text.find("<AppendedData"), text.size());
-  const unsigned long long size = text.size();
-  const auto corrupt = [&](const std::string& what) { return Error(path + ": " + what + " (corrupt file?)"); };
-  // Counts: zlib expands at most ~1032:1, so no honest file holds more items than that.
-  for (const char* key : {"NumberOfPoints=\"", "NumberOfCells=\"", "NumberOfPolys=\"", "NumberOfTuples=\""})
-    for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
-      const unsigned long long n = std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
-      if (n > 1100 * size)
-        throw corrupt(std::string(key, std::strlen(key) - 2) + " = " + std::to_string(n) + " is more than " +
-                      std::to_string(size) + " bytes can hold");
-    }
-  if (appended == text.size() || text.find("byte_order=\"BigEndian\"") < appended) return;
-  const std::size_t underscore = text.find('_', text.find('>', appended));
-  if (underscore == std::string::npos) return;
-  const unsigned long long data = underscore + 1;
-  const bool wide = text.find("header_type=\"UInt64\"") < appended;
-  const bool compressed = text.find("compressor=") < appended;
-  const unsigned long long h = wide ? 8 : 4;
-  const auto word = [&](unsigned long long at) {
-    unsigned long long v = 0;
-    for (unsigned long long b = 0; b < h; ++b) v |= static_cast<unsigned long long>(static_cast<unsigned char>(text[at + b])) << (8 * b);
-    return v;
-  };
-  const char* key = "offset=\"";
-  for (std::size_t at = text.find(key); at < appended; at = text.find(key, at + 1)) {
-    const unsigned long long pos = data + std::strtoull(text.c_str() + at + std::strlen(key), nullptr, 10);
-    if (pos > size || size - pos < (compressed ? 3 : 1) * h) throw corrupt("an array's data lies beyond the end of the file");
-    if (!compressed) {
-      if (word(pos) > size - pos - h) throw corrupt("an array claims more bytes than the file holds");
-      continue;
-    }
-    const unsigned long long blocks = word(pos), block = word(pos + h), last = word(pos + 2 * h);
-    if (blocks > (size - pos) / h - 3) throw corrupt("a compressed array claims more blocks than the file holds");
-    if ((blocks > 0 && block == 0) || block > (1ULL << 31) || last > block)  // VTK allocates `block` even for 0 blocks
-      throw corrupt("a compressed array has an impossible block size");
-    unsigned long long total = 0;
-    for (unsigned long long b = 0; b < blocks; ++b) total += word(pos + (3 + b) * h);
-    if (total > size - pos - (3 + blocks) * h) throw corrupt("a compressed array claims more bytes than the file holds");
-    if (blocks * block > 1100 * size) throw corrupt("a compressed array expands to more than its file can hold");
-  }
-}
-
 template <class Reader>
 void configure_legacy(Reader* reader) {
   reader->ReadAllScalarsOn();
@@ -442,7 +395,9 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
   if (path == "-") {  // standard input carries VTK XML
     auto reader = Ptr<vtkXMLUnstructuredGridReader>::New();
     reader->ReadFromInputStringOn();
-    reader->SetInputString(read_stdin());
+    const std::string text = read_stdin();
+    check_vtk_xml_text(display_name(path), text);
+    reader->SetInputString(text);
     update_or_throw(reader.Get(), messages, display_name(path), what);
     return reader->GetOutput();
   }
@@ -452,7 +407,7 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
     auto reader = Ptr<vtkXMLUnstructuredGridReader>::New();
     if (!reader->CanReadFile(path.c_str()))
       throw Error(path + ": not a VTK XML unstructured grid (.vtu) file");
-    check_xml_sizes(path);
+    check_vtk_xml_sizes(path);
     reader->SetFileName(path.c_str());
     update_or_throw(reader.Get(), messages, path, what);
     return reader->GetOutput();
@@ -722,8 +677,21 @@ void check_stl(const std::string& path) {
   }
   std::size_t i = 0;
   while (i < static_cast<std::size_t>(got) && std::isspace(static_cast<unsigned char>(header[i]))) ++i;
-  if (std::string(header + i, std::min<std::size_t>(5, got - i)) == "solid") return;  // ASCII
-  throw Error(path + ": not an STL file (neither ASCII 'solid ...' nor binary with a matching triangle count)");
+  if (std::string(header + i, std::min<std::size_t>(5, got - i)) != "solid")
+    throw Error(path + ": not an STL file (neither ASCII 'solid ...' nor binary with a matching triangle count)");
+  // ASCII. VTK takes a file with a byte above 127 near its start for binary whatever its first
+  // word, and then allocates the triangle count of bytes 80-83: refuse any byte ASCII lacks.
+  in.clear();
+  in.seekg(0);
+  char chunk[65536];
+  std::uint64_t at = 0;
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    for (std::streamsize k = 0; k < in.gcount(); ++k)
+      if (static_cast<unsigned char>(chunk[k]) > 127)
+        throw Error(path + ": byte " + std::to_string(at + static_cast<std::uint64_t>(k)) +
+                    " is not ASCII in an ASCII STL file ('solid ...'), and the size does not fit a binary one");
+    at += static_cast<std::uint64_t>(in.gcount());
+  }
 }
 
 TriangleMesh from_polydata(vtkPolyData* poly, const std::string& name) {
@@ -882,10 +850,12 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
       auto reader = Ptr<vtkXMLPolyDataReader>::New();
       if (path == "-") {
         reader->ReadFromInputStringOn();
-        reader->SetInputString(read_stdin());
+        const std::string text = read_stdin();
+        check_vtk_xml_text(name, text);
+        reader->SetInputString(text);
       } else {
         if (!reader->CanReadFile(path.c_str())) throw Error(path + ": not a VTK XML polydata (.vtp) file");
-        check_xml_sizes(path);
+        check_vtk_xml_sizes(path);
         reader->SetFileName(path.c_str());
       }
       update_or_throw(reader.Get(), messages, name, what);

@@ -27,6 +27,26 @@ absent() { for f in "$@"; do [ ! -e "$f" ] || fail "$f left behind"; done; }
 "$B/xfem-solve" -q "$S/system" -o "$S/u.mtx" || fail "solve"
 grep -q "^% xfem-fingerprint enriched fnv1a64:" "$S/u.mtx" || fail "u.mtx records no fingerprint: $(head -3 "$S/u.mtx")"
 
+# 1. A stale system directory: xfem-assemble replaces a system as a whole (written under a
+# temporary name, system.json last, renamed into place). Killed at any moment while assembling
+# another problem into it, the directory holds the old system or the new one, never a mix: the
+# solution is u.mtx or u2.mtx exactly. A directory without its completion marker is refused.
+sed 's/"E": 300e3/"E": 400e3/' "$PROBLEM" >"$S/stiffer.json"
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" --format mtx -o "$S/system2" || fail "assemble 2"
+"$B/xfem-solve" -q "$S/system2" -o "$S/u2.mtx" || fail "solve 2"
+for delay in 0.2 0.5 1 2; do
+  rm -rf "$S/killed"; cp -r "$S/system" "$S/killed"
+  ( timeout -s KILL "$delay" "$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" \
+    --format mtx -o "$S/killed" ) 2>/dev/null
+  "$B/xfem-solve" -q "$S/killed" -o "$S/u_killed.mtx" || fail "the system directory after a kill at $delay s is unreadable"
+  cmp -s "$S/u_killed.mtx" "$S/u.mtx" || cmp -s "$S/u_killed.mtx" "$S/u2.mtx" \
+    || fail "after a kill at $delay s the system directory is neither the old nor the new system"
+done
+rm -rf "$S/partial"; cp -r "$S/system" "$S/partial"; rm "$S/partial/system.json"
+expect 1 "partial: no system.json, the marker xfem-assemble writes last: the directory is incomplete" \
+  "$B/xfem-solve" "$S/partial" -o "$S/n.mtx"
+absent "$S/n.mtx"
+
 # 2. Files that do not belong together: refused, naming both files.
 expect 1 "other.vtp: not the cut $S/enriched.vtu was classified with" \
   "$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/other.vtp" --problem "$PROBLEM" -o "$S/sys2"
@@ -37,9 +57,6 @@ expect 1 "other.vtp: not the cut" \
   "$B/xfem-rmserror" -q "$S/enriched.vtu" --cut "$S/other.vtp" -s "$S/u.mtx" --exact "$XFEM_SOURCE/pipelines/verification/data/rigid_exact.json"
 absent "$S/d.vtu"
 # A solution of another system of the same size: the same mesh and cut, another problem.
-sed 's/"E": 300e3/"E": 400e3/' "$PROBLEM" >"$S/stiffer.json"
-"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" -o "$S/system2" || fail "assemble 2"
-"$B/xfem-solve" -q "$S/system2" -o "$S/u2.mtx" || fail "solve 2"
 expect 1 "u2.mtx: does not belong to $PROBLEM (made for the problem" \
   "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u2.mtx" -p "$PROBLEM" -o "$S/d.vtu"
 absent "$S/d.vtu"
@@ -91,6 +108,10 @@ awk 'NR <= 2 { print; next } { print ($1 == 0 ? 0 : $1 * 1e196) }' "$S/u_old.mtx
 expect 1 "refusing to write a non-finite value" \
   "$B/xfem-visualize" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_huge.mtx" -p "$PROBLEM" -o "$S/n.vtu"
 absent "$S/n.vtu"
+expect 1 "u_huge.mtx: the RMS error is not finite (overflow in the solution?)" \
+  "$B/xfem-rmserror" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_huge.mtx" --exact "$XFEM_SOURCE/pipelines/verification/data/rigid_exact.json"
+expect 1 "u_huge.mtx: the RMS error is not finite (overflow in the solution?)" \
+  "$B/xfem-rmserror" -q "$S/enriched.vtu" --cut "$S/cut.vtp" -s "$S/u_huge.mtx" -r "$S/d.vtu"
 sed 's/"E": 300e3/"E": 1e999/' "$PROBLEM" >"$S/overflow.json"
 expect 1 "overflow.json: a number in the JSON is too large for a double" \
   "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/overflow.json" -o "$S/sys5"
@@ -104,6 +125,12 @@ expect 2 "value 100000 is not in [1, 1000]" \
 expect 1 "integration points in" \
   "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --points 100000 --refine 8 -o "$S/sys6"
 absent "$S/big.vtu" "$S/big.vtp" "$S/sys6"
+# A deliberate long run says so (progress after 3 s); killed, it leaves no system behind.
+timeout 6 "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --rule conforming --order 20 \
+  -o "$S/sys20" 2>"$S/err.txt"
+grep -q "xfem-assemble: assembling [0-9]*%" "$S/err.txt" || fail "--order 20 shows no progress: $(cat "$S/err.txt")"
+absent "$S/sys20"
+[ -z "$(ls -A "$S" | grep "^\.sys20")" ] || fail "a killed xfem-assemble left $(ls -A "$S" | grep "^\.sys20")"
 
 # 6. Malformed input.
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 104 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n' >"$S/phantom.vtk"
@@ -118,6 +145,9 @@ cp -r "$S/system" "$S/dup"; awk 'NR == 2 { $3 = $3 + 1 } { print } NR == 3 { pri
 expect 1 "K.mtx: an entry appears twice" "$B/xfem-solve" "$S/dup" -o "$S/n.mtx"
 cp -r "$S/system" "$S/upper"; awk 'NR == 4 && $1 != $2 { t = $1; $1 = $2; $2 = t } { print }' "$S/system/K.mtx" >"$S/upper/K.mtx"
 expect 1 "above the diagonal in a symmetric file" "$B/xfem-solve" "$S/upper" -o "$S/n.mtx"
+cp -r "$S/system" "$S/unsorted"; awk 'NR == 4 { held = $0; next } { print } NR == 5 { print held }' "$S/system/dirichlet.mtx" >"$S/unsorted/dirichlet.mtx"
+expect 1 "unsorted/dirichlet.mtx: line 5: row 1 after row 2 (the rows must be strictly increasing)" \
+  "$B/xfem-solve" "$S/unsorted" -o "$S/n.mtx"
 absent "$S/n.vtu" "$S/n.mtx"
 
 # 7. Outputs checked before any work: nothing left behind.

@@ -24,8 +24,10 @@ B=$P/bin
 "$B/xfem-solve" -q system -o u.mtx || fail "installed xfem-solve"
 [ -s u.mtx ] || fail "no solution"
 
-# A consumer project. Its build type matches ours so that the same configuration is linked.
+# A consumer project. Its build type matches ours so that the same configuration is linked, and
+# so do its compiler and flags (a sanitizer build's library needs the sanitizer runtime).
 cmake -S "$XFEM_SOURCE/test/consumer" -B consumer -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$P" \
+  -DCMAKE_CXX_COMPILER="${XFEM_CXX:-c++}" -DCMAKE_CXX_FLAGS="${XFEM_CXX_FLAGS:-}" \
   >consumer.log 2>&1 || fail "consumer configure: $(tail -20 consumer.log)"
 cmake --build consumer >>consumer.log 2>&1 || fail "consumer build: $(tail -20 consumer.log)"
 out=$(consumer/consumer box.vtu) || fail "consumer run"

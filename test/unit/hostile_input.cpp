@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 
 #include "xfem/error.h"
@@ -23,6 +24,23 @@ std::string scratch(const std::string& name, const std::string& text) {
   const std::string path = (dir / name).string();
   std::ofstream(path, std::ios::binary) << text;
   return path;
+}
+// A system directory from one fuzz input (as fuzz/fuzz_reader.cpp builds it): its files separated
+// by the line "=====", in the order system.json, K.mtx, f.mtx, dirichlet.mtx, coordinates.mtx.
+std::string system_dir(const std::string& input) {
+  std::ifstream in(input, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const fs::path dir = fs::temp_directory_path() / "xfem_unit_hostile" / "system";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::size_t start = 0;
+  for (const char* name : {"system.json", "K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx"}) {
+    const std::size_t stop = text.find("\n=====\n", start);
+    std::ofstream((dir / name).string(), std::ios::binary) << text.substr(start, stop == std::string::npos ? stop : stop - start);
+    if (stop == std::string::npos) break;
+    start = stop + 7;
+  }
+  return dir.string();
 }
 }  // namespace
 
@@ -70,6 +88,15 @@ TEST_CASE("hostile: Matrix Market content that would be silently misread is refu
   CHECK_THROWS_WITH(
       xfem::read_matrix(scratch("upper.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n1 2 1\n")),
       Catch::Contains("upper.mtx: line 4: entry (1, 2) above the diagonal in a symmetric file"));
+  // dirichlet.mtx's rows must be strictly increasing (FORMATS.md): out of order or repeated is refused.
+  const std::string unsorted =
+      scratch("unsorted.mtx", "%%MatrixMarket matrix coordinate real general\n6 1 3\n1 1 0\n4 1 0.5\n2 1 0\n");
+  CHECK_THROWS_WITH(xfem::read_matrix(unsorted, true),
+                    Catch::Contains("unsorted.mtx: line 5: row 2 after row 4 (the rows must be strictly increasing)"));
+  CHECK(xfem::read_matrix(unsorted).nonZeros() == 3);  // K.mtx may come in any order
+  CHECK_THROWS_WITH(
+      xfem::read_matrix(scratch("repeated.mtx", "%%MatrixMarket matrix coordinate real general\n6 1 2\n3 1 0\n3 1 0\n"), true),
+      Catch::Contains("repeated.mtx: line 4: row 3 after row 3"));
   // Trailing white space is fine.
   CHECK(xfem::read_vector(scratch("ok.mtx", "%%MatrixMarket matrix array real general\n2 1\n1\n2\n\n  \n")).size() == 2);
 }
@@ -119,6 +146,7 @@ TEST_CASE("hostile: the fuzzing regressions are rejected cleanly", "[hostile][fu
       {"mtx_vector", [](const std::string& p) { xfem::read_vector(p); }},
       {"problem", [](const std::string& p) { xfem::read_problem(p); }},
       {"exact", [](const std::string& p) { xfem::read_exact_field(p); }},
+      {"system", [](const std::string& p) { xfem::read_linear_system(system_dir(p)); }},
   };
   int files = 0;
   for (const auto& dir : fs::directory_iterator(std::string(XFEM_TEST_DATA) + "/fuzz-regressions")) {
@@ -131,7 +159,9 @@ TEST_CASE("hostile: the fuzzing regressions are rejected cleanly", "[hostile][fu
       try {
         readers.at(reader)(file.path().string());
       } catch (const xfem::Error& e) {
-        CHECK(std::string(e.what()).find(file.path().string()) == 0);  // names the file
+        // names the file (a system input: the directory built from it)
+        CHECK(std::string(e.what()).find(reader == "system" ? std::string(fs::temp_directory_path() / "xfem_unit_hostile" / "system")
+                                                            : file.path().string()) == 0);
       }
     }
   }
