@@ -231,7 +231,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   for (std::size_t i = 0; i < enriched.size(); ++i) {
     if (conforming_order > 0) {
       conforming_rule(em, splits, enriched[i], conforming_order, points);
-      element_stiffness_at_points(em, enriched[i], points, material, k, conforming_order + 1);
+      element_stiffness_at_points(em, enriched[i], points, material, k, conforming_order);
     } else {
       element_stiffness(em, enriched[i], rule, material, k);
     }
