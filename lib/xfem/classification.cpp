@@ -414,9 +414,7 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       if (c.enrichment[m] == Enrichment::Branch) continue;
       const Eigen::Vector3d x = mesh.points.row(m).transpose();
       const FrontSegment& s = c.front.segments()[c.front.closest_segment(x)];
-      const Eigen::Vector3d d = s.p1 - s.p0;
-      const double u = std::clamp((x - s.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
-      if ((s.p0 + u * d - x).norm() <= options.tip_radius) {
+      if (point_segment_distance(x, s.p0, s.p1) <= options.tip_radius) {
         ++c.counts.radius_branch;
         c.enrichment[m] = Enrichment::Branch;
       }

@@ -30,13 +30,6 @@ constexpr int kMaxLevels = 8;
 constexpr double kNearFar = 0.5;
 constexpr int kMaxLevelsFar = 8;
 
-double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-  const Eigen::Vector3d d = q - p;
-  const double dd = d.squaredNorm();
-  const double t = dd > 0 ? std::clamp((x - p).dot(d) / dd, 0.0, 1.0) : 0.0;
-  return (x - p - t * d).norm();
-}
-
 double segment_segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& q0,
                                 const Eigen::Vector3d& q1) {
   double best = std::min({point_segment_distance(p0, q0, q1), point_segment_distance(p1, q0, q1),

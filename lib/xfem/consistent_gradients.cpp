@@ -9,6 +9,7 @@
 #include "xfem/branch_functions.h"
 #include "xfem/conforming_quadrature.h"
 #include "xfem/cut_pieces.h"
+#include "xfem/mesh.h"
 #include "xfem/tet_shape.h"
 
 namespace xfem {
@@ -81,12 +82,6 @@ bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point
   return true;
 }
 
-double distance_to_segment(const Eigen::Vector3d& x, const FrontSegment& f) {
-  const Eigen::Vector3d d = f.p1 - f.p0;
-  const double u = std::clamp((x - f.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (f.p0 + u * d - x).norm();
-}
-
 // The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
 // into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
 // segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
@@ -99,7 +94,7 @@ void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eig
     const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
     const Eigen::Vector3d centre = (A + B + C) / 3;
     bool near = false;
-    for (const FrontSegment* f : fronts) near = near || distance_to_segment(centre, *f) < size;
+    for (const FrontSegment* f : fronts) near = near || point_segment_distance(centre, f->p0, f->p1) < size;
     if (near) {
       const Eigen::Vector3d ab = (A + B) / 2, bc = (B + C) / 2, ca = (C + A) / 2;
       triangle_rule(A, ab, ca, depth - 1, fronts, nodes, weights, x, w);
@@ -141,7 +136,7 @@ Eigen::Vector3d fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, con
   }
   for (const Eigen::Vector3d& v : poly)
     for (const FrontSegment* f : fronts)
-      if (distance_to_segment(v, *f) <= tolerance) return v;
+      if (point_segment_distance(v, f->p0, f->p1) <= tolerance) return v;
   return poly[0];
 }
 

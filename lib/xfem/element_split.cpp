@@ -337,11 +337,8 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
           // field is continuous and the pieces share one point.
           if (partial && sd != 0) {
             bool on_front = false;
-            for (const FrontSegment& f : front) {
-              const Eigen::Vector3d d = f.p1 - f.p0;
-              const double u = std::clamp((x - f.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
-              on_front = on_front || (f.p0 + u * d - x).norm() <= 1e-12 * parent_edge;
-            }
+            for (const FrontSegment& f : front)
+              on_front = on_front || point_segment_distance(x, f.p0, f.p1) <= 1e-12 * parent_edge;
             if (on_front || cut_surface->closest(x).distance > 1e-12 * parent_edge) sd = 0;
           }
           for (int c = 0; c < 4; ++c)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/mesh.h"
 
+#include <algorithm>
+
 
 #include "xfem/error.h"
 
@@ -15,6 +17,13 @@ double signed_volume(const TetMesh& mesh, int tet) {
   const auto& t = mesh.tets.row(tet);
   return signed_volume(mesh.points.row(t[0]), mesh.points.row(t[1]), mesh.points.row(t[2]),
                        mesh.points.row(t[3]));
+}
+
+double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+  const Eigen::Vector3d d = q - p;
+  const double dd = d.squaredNorm();
+  const double t = dd > 0 ? std::clamp((x - p).dot(d) / dd, 0.0, 1.0) : 0.0;
+  return (x - p - t * d).norm();
 }
 
 const DataArray& require_array(const DataArrays& arrays, const std::string& name, const char* where,

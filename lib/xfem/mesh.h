@@ -49,6 +49,9 @@ double signed_volume(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const
                      const Eigen::Vector3d& p3);
 double signed_volume(const TetMesh& mesh, int tet);
 
+/// Distance from x to the segment (p, q) (to p when the segment has no length).
+double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q);
+
 /// The array `name` of `arrays`, checked to have `components` components and `tuples` tuples.
 /// Throws xfem::Error "<file>: <where> array '<name>' missing (is this <stage> output?)" or a
 /// message naming the wrong size. `where` is "point", "cell" or "field".

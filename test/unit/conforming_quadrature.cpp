@@ -35,26 +35,7 @@ using xfem_test::plane_cut;
 // One cube [0,1]^3 (6 tets), every node branch enriched, the front the line x = -0.2, z = 0.5
 // (parallel to y) outside the box: no cut element, every element integrates the ACTFs.
 xfem::EnrichedMesh all_branch_box() {
-  xfem::EnrichedMesh em = plain(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
-  em.nb = em.np;
-  em.n = em.np + 4 * em.nb;
-  std::vector<long> offsets{0}, dofs;
-  std::vector<int> local;
-  for (int t = 0; t < em.tets(); ++t) {
-    for (int c = 0; c < 4; ++c) {
-      dofs.push_back(em.mesh.tets(t, c));
-      local.push_back(c);
-    }
-    for (int c = 0; c < 4; ++c)
-      for (int j = 0; j < 4; ++j) {
-        dofs.push_back(em.np + 4L * em.mesh.tets(t, c) + j);
-        local.push_back(c);
-      }
-    offsets.push_back(static_cast<long>(dofs.size()));
-  }
-  em.offsets = offsets;
-  em.dofs = dofs;
-  em.local = local;
+  xfem::EnrichedMesh em = xfem_test::all_branch(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
   em.front = xfem::CrackFront({xfem::FrontSegment{{-0.2, 2.0, 0.5}, {-0.2, -1.0, 0.5}, {0, 0, 1}}});
   em.cut = plane_cut(0.5);
   return em;

@@ -18,26 +18,7 @@ using V = Eigen::Vector3d;
 // The unit box of 4^3 cubes, every node branch enriched, cut by the half-plane z = 0.5, x <= 0.45:
 // the front x = 0.45 runs through the middle of a layer of elements.
 xfem::EnrichedMesh front_inside_box() {
-  xfem::EnrichedMesh em = xfem_test::plain(xfem::box_mesh({4, 4, 4}, {0, 0, 0}, {1, 1, 1}));
-  em.nb = em.np;
-  em.n = em.np + 4 * em.nb;
-  std::vector<long> offsets{0}, dofs;
-  std::vector<int> local;
-  for (int t = 0; t < em.tets(); ++t) {
-    for (int c = 0; c < 4; ++c) {
-      dofs.push_back(em.mesh.tets(t, c));
-      local.push_back(c);
-    }
-    for (int c = 0; c < 4; ++c)
-      for (int j = 0; j < 4; ++j) {
-        dofs.push_back(em.np + 4L * em.mesh.tets(t, c) + j);
-        local.push_back(c);
-      }
-    offsets.push_back(static_cast<long>(dofs.size()));
-  }
-  em.offsets = offsets;
-  em.dofs = dofs;
-  em.local = local;
+  xfem::EnrichedMesh em = xfem_test::all_branch(xfem::box_mesh({4, 4, 4}, {0, 0, 0}, {1, 1, 1}));
   xfem::TriangleMesh cut;
   cut.points.resize(4, 3);
   cut.points << -1, -1, 0.5, 0.45, -1, 0.5, 0.45, 2, 0.5, -1, 2, 0.5;

@@ -30,6 +30,32 @@ inline xfem::EnrichedMesh plain(const xfem::TetMesh& mesh) {
   return em;
 }
 
+/// `mesh` with every node branch enriched: C = the tet's 4 points, then the 4 branch DOFs of each
+/// of its nodes (node k's at NP + 4k .. NP + 4k + 3); the caller sets the front and the cut.
+inline xfem::EnrichedMesh all_branch(const xfem::TetMesh& mesh) {
+  xfem::EnrichedMesh em = plain(mesh);
+  em.nb = em.np;
+  em.n = em.np + 4 * em.nb;
+  std::vector<long> offsets{0}, dofs;
+  std::vector<int> local;
+  for (int t = 0; t < em.tets(); ++t) {
+    for (int c = 0; c < 4; ++c) {
+      dofs.push_back(em.mesh.tets(t, c));
+      local.push_back(c);
+    }
+    for (int c = 0; c < 4; ++c)
+      for (int j = 0; j < 4; ++j) {
+        dofs.push_back(em.np + 4L * em.mesh.tets(t, c) + j);
+        local.push_back(c);
+      }
+    offsets.push_back(static_cast<long>(dofs.size()));
+  }
+  em.offsets = offsets;
+  em.dofs = dofs;
+  em.local = local;
+  return em;
+}
+
 /// The plane z = `z` (normal +z) as two triangles reaching out of the unit box on every side.
 inline std::shared_ptr<xfem::CutSurface> plane_cut(double z) {
   xfem::TriangleMesh cut;
