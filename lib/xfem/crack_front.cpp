@@ -32,44 +32,47 @@ CrackFront::CrackFront(std::vector<FrontSegment> segments) : segments_(std::move
 
 namespace {
 
-// g(s) = (x - P(s)) . c(s): zero where x lies in the front's normal plane at s (the plane through
-// P(s) normal to the interpolated tangent c(s)).
-double normal_plane_offset(const FrontPolyline& ch, const Eigen::Vector3d& x, double s) {
-  Eigen::Vector3d c, b;
-  ch.frame(s, c, b);
-  return (x - ch.position(s)).dot(c);
-}
-
 void locate(const FrontPolyline& p, double s, int& i, double& f);
 double wrap(const FrontPolyline& p, double s);
 void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 
-// normal_plane_offset for the many s of a bisection inside one segment, with the segment's two
-// vertex tangents computed once (they dominated the assembly of branch-enriched tets: ~70 % of
-// xfem-assemble on the organ example). The same arithmetic, so the same bits.
-class SegmentOffset {
- public:
-  SegmentOffset(const FrontPolyline& ch, int segment) : ch_(ch), segment_(segment) {
-    Eigen::Vector3d b;
-    cached_vertex_frame(ch, segment, c0_, b);
-    cached_vertex_frame(ch, segment + 1, c1_, b);
+// Where x's normal plane meets segment i of a chain, as the fraction f in [0, 1] along it, or -1
+// if it does not. Along the segment P(f) = p_i + f d and the tangent is c(f) = c~(f) / |c~(f)|
+// with c~(f) = c_i + f (c_j - c_i) (FrontPolyline::frame), so g(f) = (x - P(f)) . c(f) has the
+// sign of the quadratic h(f) = (w - f d) . (c_i + f e), w = x - p_i, e = c_j - c_i. Solved in
+// closed form: this is called for every integration point of a branch-enriched tet, and the
+// bisection it replaces dominated xfem-assemble on curved fronts. As before, a segment whose ends
+// have the same strict sign of g holds no foot (its two roots, if any, belong to a fold of the
+// normal planes beyond the front's radius of curvature).
+double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& x) {
+  const int j = (i + 1) % static_cast<int>(ch.points.size());
+  Eigen::Vector3d ci, cj, b;
+  cached_vertex_frame(ch, i, ci, b);
+  cached_vertex_frame(ch, i + 1, cj, b);
+  const Eigen::Vector3d w = x - ch.points[i], d = ch.points[j] - ch.points[i], e = cj - ci;
+  const double h0 = w.dot(ci), h1 = (x - ch.points[j]).dot(cj);
+  if ((h0 > 0 && h1 > 0) || (h0 < 0 && h1 < 0)) return -1.0;
+  if (h0 == 0) return 0.0;
+  if (h1 == 0) return 1.0;
+  const double A = h0, B = w.dot(e) - d.dot(ci), C = -d.dot(e);  // h(f) = A + B f + C f^2
+  // h changes sign on [0, 1], so exactly one root lies there; the stable pair of formulas finds
+  // both roots of the quadratic without cancellation, and the one in [0, 1] is kept.
+  double f;
+  const double disc = std::max(B * B - 4 * A * C, 0.0);
+  const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+  if (q == 0) {
+    f = 0.0;
+  } else {
+    const double r1 = A / q, r2 = C != 0 ? q / C : std::numeric_limits<double>::infinity();
+    f = std::abs(r1 - 0.5) <= std::abs(r2 - 0.5) ? r1 : r2;
   }
-  double operator()(const Eigen::Vector3d& x, double s) const {
-    int i;
-    double f;
-    locate(ch_, wrap(ch_, s), i, f);
-    if (i != segment_) return normal_plane_offset(ch_, x, s);  // s at the next vertex
-    const Eigen::Vector3d c = ((1 - f) * c0_ + f * c1_).normalized();
-    const int j = (i + 1) % static_cast<int>(ch_.points.size());
-    return (x - ((1 - f) * ch_.points[i] + f * ch_.points[j])).dot(c);
-  }
-
- private:
-  const FrontPolyline& ch_;
-  int segment_;
-  Eigen::Vector3d c0_, c1_;
-};
+  f = std::clamp(f, 0.0, 1.0);
+  // One Newton step on h removes the rounding of the formula's branch choice.
+  const double dh = B + 2 * C * f;
+  if (dh != 0) f = std::clamp(f - (A + (B + C * f) * f) / dh, 0.0, 1.0);
+  return f;
+}
 
 }  // namespace
 
@@ -80,35 +83,42 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
   // polyline, which jumps between the two segments of a corner for the points on its concave
   // side, the normal planes turn continuously with s, so s(x) is continuous (up to the front's
   // radius of curvature). Beyond the ends of an open chain the end point is the foot.
-  double d0 = std::numeric_limits<double>::infinity();
+  // Pass 1: every segment's distance to x (kept for pass 2) and the closest point of the front,
+  // the foot when no normal plane holds x (beyond an open chain's end). Squared distances, no
+  // square roots in the loops: this runs for every integration point of a branch-enriched tet.
+  thread_local std::vector<double> distance2;
+  distance2.clear();
+  double best2 = std::numeric_limits<double>::infinity();
   const FrontPolyline* best = nullptr;
   double s = 0;
   int seg = 0;
   bool inside = false;
   for (const FrontPolyline& ch : *chains_) {
-    double cs, cd;
-    int ci = 0;
-    ch.closest(x, cs, cd, &ci);
-    if (cd < d0) best = &ch, s = cs, d0 = cd, seg = ci;
-  }
-  double best_root = std::numeric_limits<double>::infinity();
-  for (const FrontPolyline& ch : *chains_) {
     const int m = ch.segments(), np = static_cast<int>(ch.points.size());
     for (int i = 0; i < m; ++i) {
-      const Eigen::Vector3d p0 = ch.points[i], d = ch.points[(i + 1) % np] - p0;
-      const double len = d.norm();
-      const double t = std::clamp((x - p0).dot(d) / (len * len), 0.0, 1.0);
-      if ((p0 + t * d - x).norm() > 1.5 * d0 + 1e-12 * len) continue;  // too far to hold the foot
-      double lo = ch.arc[i], hi = ch.arc[i] + len;
-      const SegmentOffset normal_plane_offset(ch, i);
-      double glo = normal_plane_offset(x, lo), ghi = normal_plane_offset(x, hi);
-      if ((glo > 0 && ghi > 0) || (glo < 0 && ghi < 0)) continue;
-      for (int k = 0; k < 60 && hi - lo > 1e-15 * len; ++k) {  // g falls along the segment near the front
-        const double mid = 0.5 * (lo + hi), gm = normal_plane_offset(x, mid);
-        if ((gm > 0) == (glo > 0)) lo = mid, glo = gm;
-        else hi = mid;
-      }
-      const double root = 0.5 * (lo + hi), dist = (x - ch.position(root)).norm();
+      const Eigen::Vector3d& p0 = ch.points[i];
+      const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+      const double len2 = d.squaredNorm();
+      const double t = len2 > 0 ? std::clamp((x - p0).dot(d) / len2, 0.0, 1.0) : 0.0;
+      const double d2 = (p0 + t * d - x).squaredNorm();
+      distance2.push_back(d2);
+      if (d2 < best2) best2 = d2, best = &ch, s = ch.arc[i] + t * std::sqrt(len2), seg = i;
+    }
+  }
+  // Pass 2: the feet in normal planes, on the segments near enough to hold one.
+  const double d0 = std::sqrt(best2);
+  double best_root = std::numeric_limits<double>::infinity();
+  std::size_t k = 0;
+  for (const FrontPolyline& ch : *chains_) {
+    const int m = ch.segments(), np = static_cast<int>(ch.points.size());
+    for (int i = 0; i < m; ++i, ++k) {
+      const Eigen::Vector3d& p0 = ch.points[i];
+      const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+      const double len = d.norm(), reach = 1.5 * d0 + 1e-12 * len;
+      if (distance2[k] > reach * reach) continue;  // too far to hold the foot
+      const double f = normal_plane_root(ch, i, x);
+      if (f < 0) continue;
+      const double root = ch.arc[i] + f * len, dist = (x - (p0 + f * d)).norm();
       if (dist < best_root) {
         best_root = dist, best = &ch, s = root, seg = i;
         inside = ch.closed || (root > 0 && root < ch.length);
