@@ -115,6 +115,7 @@ void exec_with_arguments(const std::string& program, int processes, int argc, ch
   std::vector<char*> cargs;
   for (auto& a : args) cargs.push_back(a.data());
   cargs.push_back(nullptr);
+  ::setenv("XFEM_OPTIONS_SHOWN", "1", 1);  // -v: this process has printed them (cli.cpp)
   std::fflush(stderr);
   if (processes > 1)
     ::execvp("mpirun", cargs.data());

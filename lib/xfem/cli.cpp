@@ -230,7 +230,11 @@ int run(Tool& tool, int argc, char** argv, const std::function<void()>& body) {
               << " --help)\n";
     return 2;
   }
-  if (tool.verbose) std::cerr << tool.name << ": options:\n" << tool.app.config_to_str(true, false);
+  // The options once per command: not again in the processes xfem-solve restarts itself as
+  // (it sets XFEM_OPTIONS_SHOWN), nor in every rank of a user's mpirun.
+  const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+  if (tool.verbose && !std::getenv("XFEM_OPTIONS_SHOWN") && !(rank && std::string(rank) != "0"))
+    std::cerr << tool.name << ": options:\n" << tool.app.config_to_str(true, false);
   try {
     body();
   } catch (const std::bad_alloc&) {

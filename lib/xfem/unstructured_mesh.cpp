@@ -2,7 +2,9 @@
 // GCC 12 flags Boost.Graph's edge descriptors (used by CGAL's feature detection) as maybe
 // uninitialized inside std::allocator once inlined here: a false positive in library code. The
 // pragma must precede every include, since the warning is attributed to <new_allocator.h>.
+#if defined(__GNUC__) && !defined(__clang__)  // clang has no such warning (and would warn about the pragma)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "xfem/unstructured_mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

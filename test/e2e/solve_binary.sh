@@ -50,6 +50,9 @@ if "$SOLVE" --version | grep -q petsc; then
     mpirun --allow-run-as-root --oversubscribe -np 2 "$SOLVE" -q "$S/sys" -o "$S/u3.mtx" --backend petsc --np 2 \
       --rtol 1e-10 --report "$S/p3.json" || fail "explicit mpirun"
     [ "$(json processes "$S/p3.json")" = 2 ] || fail "explicit mpirun: $(json processes "$S/p3.json") processes"
+    # -v prints the options once, not once more per process started under mpirun.
+    "$SOLVE" -v "$S/sys" -o "$S/u4.mtx" --np 2 --rtol 1e-10 2>"$S/err4.txt" || fail "--np 2 -v: $(cat "$S/err4.txt")"
+    [ "$(grep -c 'options:' "$S/err4.txt")" = 1 ] || fail "--np 2 -v printed the options $(grep -c 'options:' "$S/err4.txt") times"
   else
     echo "SKIP --np 2: no mpirun"
   fi
