@@ -126,7 +126,7 @@ def ensure_mesh(r, cache, case):
 
 def mpirun(processes):
     """mpirun with what a shared 2-core box (and root) needs."""
-    cmd = ["mpirun", "-np", str(processes), "--oversubscribe", "--bind-to", "none"]
+    cmd = ["mpirun", "-np", str(processes), "--oversubscribe", "--bind-to", "none", "--mca", "mpi_yield_when_idle", "1"]
     if os.geteuid() == 0:
         cmd.append("--allow-run-as-root")
     return cmd

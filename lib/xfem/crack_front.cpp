@@ -32,8 +32,6 @@ CrackFront::CrackFront(std::vector<FrontSegment> segments) : segments_(std::move
 
 namespace {
 
-void locate(const FrontPolyline& p, double s, int& i, double& f);
-double wrap(const FrontPolyline& p, double s);
 void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 
