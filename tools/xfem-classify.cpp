@@ -98,6 +98,12 @@ int main(int argc, char** argv) {
                         std::to_string(p.b));
         j["products"].push_back(xfem::Json{{"a", p.a}, {"b", p.b}, {"nodes", p.count}});
       }
+      j["product_tiny"] = c.product_tiny;
+      if (c.product_tiny > 0)
+        xfem::cli::detail(std::to_string(c.product_tiny) +
+                          " nodes are not given a junction enrichment: one of the four sign combinations of two "
+                          "crossing cuts holds less than --tiny-support of their support (the cuts' pieces stay "
+                          "joined inside that sliver)");
       if (!summary.empty()) xfem::write_json(j, summary);
       return;
     }

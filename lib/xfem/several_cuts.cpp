@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <cstdio>
 #include <set>
 
 #include "xfem/branch_functions.h"
@@ -60,17 +61,22 @@ int region_value(int code, int k) {
 void split_tet(const TetCorners& p, const std::vector<const CutSurface*>& cuts, const std::vector<int>& classes,
                const std::vector<const CrackFront*>& fronts, std::vector<TetCorners>& pieces, std::vector<Sides>& sides) {
   const int K = static_cast<int>(cuts.size());
-  const Eigen::Vector3d centre = 0.25 * (p[0] + p[1] + p[2] + p[3]);
   Sides base{};
   std::vector<int> cutters;
-  for (int k = 0; k < K; ++k) {
-    if (classes[k] != 0)
-      cutters.push_back(k);
-    else
-      base[k] = cuts[k]->side(centre);
-  }
+  for (int k = 0; k < K; ++k)
+    if (classes[k] != 0) cutters.push_back(k);
   pieces.clear();
   sides.clear();
+  // The cuts that do not cut the tet: their side at each piece's centroid. Not at the tet's: a tet
+  // next to a junction can straddle the plane of the secondary cut extended beyond its end, and its
+  // pieces on the primary cut's far side must not inherit a side from the near one.
+  const auto finish = [&] {
+    for (std::size_t q = 0; q < pieces.size(); ++q) {
+      const Eigen::Vector3d c = 0.25 * (pieces[q][0] + pieces[q][1] + pieces[q][2] + pieces[q][3]);
+      for (int k = 0; k < K; ++k)
+        if (classes[k] == 0) sides[q][k] = cuts[k]->side(c);
+    }
+  };
   if (cutters.size() == 1 && classes[cutters[0]] == 1) {
     const int k = cutters[0];
     const CutPieces cp = split_at_front(p, *cuts[k], cuts[k]->triangles_meeting(p), fronts[k]->segments());
@@ -80,6 +86,7 @@ void split_tet(const TetCorners& p, const std::vector<const CutSurface*>& cuts, 
       s[k] = cp.side[i];
       sides.push_back(s);
     }
+    finish();
     return;
   }
   pieces.push_back(p);
@@ -102,6 +109,7 @@ void split_tet(const TetCorners& p, const std::vector<const CutSurface*>& cuts, 
     pieces.swap(next_pieces);
     sides.swap(next_sides);
   }
+  finish();
 }
 
 /// Does segment [a, b] run through the inside of tet p (a piece of positive length whose middle
@@ -269,8 +277,8 @@ CutsClassification classify_cuts(const TetMesh& mesh, const std::vector<const Cu
   }
   for (int k = 0; k < K; ++k)
     if (out.ends_on[k] >= 0 && out.ends_on[out.ends_on[k]] == k)
-      throw Error("cuts " + std::to_string(out.ends_on[k]) + " and " + std::to_string(k) +
-                  " end on each other (a V-shaped junction) : not handled; give them as one surface whose "
+      throw Error("cuts " + std::to_string(std::min(k, out.ends_on[k])) + " and " + std::to_string(std::max(k, out.ends_on[k])) +
+                  " end on each other (a V-shaped junction): not handled; give them as one surface whose "
                   "triangles share the junction's points, or let one cut reach through the other");
 
   // 2. Every tet some cut meets, split by all cuts: volumes per region around each node.
@@ -319,28 +327,94 @@ CutsClassification classify_cuts(const TetMesh& mesh, const std::vector<const Cu
     if (options.progress && t % 1024 == 0) options.progress((K + double(t) / T) / (K + 1));
   }
 
-  // 3. Enrichments from the volumes.
+  // 3. Enrichments from the volumes. The regions of a node's support that hold at least
+  // tiny_support of it; the node's functions, in the order cut 0, cut 1, ..., then the products
+  // (a, b), each taken when it is not constant on those regions and not a combination of 1 and the
+  // functions taken before (at a junction H_k restricted to its side of cut i can equal
+  // (H_i + 1) / 2 on a support the secondary cut does not reach into: K would be singular).
   auto node_code = [&](int v) {
     Sides s{};
     for (int k = 0; k < K; ++k) s[k] = out.cuts[k].side[v];
     return region_code(out.ends_on, out.ends_side, s.data(), K);
   };
-  for (int k = 0; k < K; ++k) {
-    Classification& c = out.cuts[k];
-    c.counts.sign_tiny = 0;
-    for (int v = 0; v < V; ++v) {
+  for (int t = 0; t < T; ++t) {  // the rest of each support lies in the node's own region
+    bool cut = false;
+    for (int k = 0; k < K; ++k) cut = cut || out.cuts[k].cut_class[t] != CutClass::Uncut;
+    if (cut) continue;
+    const double vol = std::abs(signed_volume(mesh, t));
+    for (int n = 0; n < 4; ++n) {
+      const int v = mesh.tets(t, n);
+      if (region[v].empty()) continue;
+      const int own = node_code(v);
+      auto it = std::find_if(region[v].begin(), region[v].end(), [&](const auto& e) { return e.first == own; });
+      if (it == region[v].end())
+        region[v].push_back({own, vol});
+      else
+        it->second += vol;
+    }
+  }
+  std::vector<std::vector<char>> product_node(K * K);
+  std::vector<long> product_count(K * K, 0);
+  for (int k = 0; k < K; ++k) out.cuts[k].counts.sign_tiny = 0;
+  for (int v = 0; v < V; ++v) {
+    std::vector<int> kept;  // region codes holding enough of the support
+    bool any = false;
+    for (const auto& [code, vol] : region[v]) {
+      if (vol > 0 && vol >= options.tiny_support * support[v]) kept.push_back(code);
+      any = any || vol > 0;
+    }
+    // Gram-Schmidt on the value vectors over the kept regions, starting from the constant.
+    std::vector<Eigen::VectorXd> basis;
+    const int R = static_cast<int>(kept.size());
+    auto independent = [&](Eigen::VectorXd f) {
+      if (R == 0) return false;
+      for (const auto& q : basis) f -= q.dot(f) * q;
+      if (f.norm() <= 1e-9 * std::sqrt(static_cast<double>(R))) return false;
+      basis.push_back(f / f.norm());
+      return true;
+    };
+    independent(Eigen::VectorXd::Ones(R));
+    for (int k = 0; k < K; ++k) {
+      Classification& c = out.cuts[k];
       if (c.enrichment[v] == Enrichment::Branch) continue;
-      const int own = region_value(node_code(v), k);
-      double other = 0;
-      for (const auto& [code, vol] : region[v])
-        if (region_value(code, k) != own) other += vol;
-      if (other > 0 && other >= options.tiny_support * support[v]) {
+      Eigen::VectorXd f(R);
+      for (int r = 0; r < R; ++r) f[r] = region_value(kept[r], k);
+      if (independent(f)) {
         c.enrichment[v] = Enrichment::Sign;
-      } else {
-        c.enrichment[v] = Enrichment::None;
-        if (other > 0) ++c.counts.sign_tiny;
+        continue;
+      }
+      c.enrichment[v] = Enrichment::None;
+      // Counted as tiny when the function varies only through regions below tiny_support.
+      bool varies = false;
+      const int own = region_value(node_code(v), k);
+      for (const auto& [code, vol] : region[v]) varies = varies || (vol > 0 && region_value(code, k) != own);
+      if (varies && any) {
+        bool varies_kept = false;
+        for (int r = 0; r < R; ++r) varies_kept = varies_kept || region_value(kept[r], k) != region_value(kept[0], k);
+        if (!varies_kept) ++c.counts.sign_tiny;
       }
     }
+    for (int a = 0; a < K; ++a)
+      for (int b = a + 1; b < K; ++b) {
+        if (out.cuts[a].enrichment[v] != Enrichment::Sign || out.cuts[b].enrichment[v] != Enrichment::Sign) continue;
+        Eigen::VectorXd f(R);
+        for (int r = 0; r < R; ++r) f[r] = region_value(kept[r], a) * region_value(kept[r], b);
+        if (!independent(f)) {
+          // All four sign combinations there, but one below tiny_support: not enriched (counted).
+          int combos = 0;
+          for (const auto& [code, vol] : region[v])
+            if (vol > 0 && region_value(code, a) != 0 && region_value(code, b) != 0) ++combos;
+          if (combos == 4) ++out.product_tiny;
+          continue;
+        }
+        auto& node = product_node[a * K + b];
+        if (node.empty()) node.assign(V, 0);
+        node[v] = 1;
+        ++product_count[a * K + b];
+      }
+  }
+  for (int k = 0; k < K; ++k) {
+    Classification& c = out.cuts[k];
     c.counts.none = c.counts.sign = c.counts.branch = 0;
     c.counts.partial = c.counts.complete = c.counts.uncut = 0;
     for (int v = 0; v < V; ++v) {
@@ -355,28 +429,15 @@ CutsClassification classify_cuts(const TetMesh& mesh, const std::vector<const Cu
     }
   }
   for (int a = 0; a < K; ++a)
-    for (int b = a + 1; b < K; ++b) {
-      CutsClassification::Product p;
-      p.a = a;
-      p.b = b;
-      p.node.assign(V, 0);
-      for (int v = 0; v < V; ++v) {
-        if (out.cuts[a].enrichment[v] != Enrichment::Sign || out.cuts[b].enrichment[v] != Enrichment::Sign) continue;
-        double combo[2][2] = {{0, 0}, {0, 0}};
-        for (const auto& [code, vol] : region[v]) {
-          const int ga = region_value(code, a), gb = region_value(code, b);
-          if (ga != 0 && gb != 0) combo[ga > 0][gb > 0] += vol;
-        }
-        bool all = true;
-        for (auto& row : combo)
-          for (double x : row) all = all && x > 0 && x >= options.tiny_support * support[v];
-        if (all) {
-          p.node[v] = 1;
-          ++p.count;
-        }
+    for (int b = a + 1; b < K; ++b)
+      if (product_count[a * K + b] > 0) {
+        CutsClassification::Product p;
+        p.a = a;
+        p.b = b;
+        p.node = std::move(product_node[a * K + b]);
+        p.count = product_count[a * K + b];
+        out.products.push_back(std::move(p));
       }
-      if (p.count > 0) out.products.push_back(std::move(p));
-    }
 
   // 4. Branch enrichments of two cuts in one tet would need two fronts' functions together.
   for (int t = 0; t < T; ++t) {
@@ -823,7 +884,7 @@ struct UnionFind {
 
 std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector<char>& node_constrained) {
   const int K = static_cast<int>(em.cuts.size());
-  const int T = em.tets(), V = static_cast<int>(em.mesh.points.rows());
+  const int T = em.tets();
   const CutElementSplits splits = split_cut_elements_several(em);
   // Parts: an uncut tet is one, a tet a front runs through is one touching every region (the
   // material is whole around the front), a cut tet one per region of its pieces.
@@ -903,9 +964,10 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
     if (f[0] != g[0] || f[1] != g[1] || f[2] != g[2]) continue;
     touching(f[3], f[4], A);
     touching(g[3], g[4], B);
+    const bool whole = splits.index[f[3]] < 0 && splits.index[g[3]] < 0;  // two uncut tets: always joined
     for (const auto& [pa, ra] : A)
       for (const auto& [pb, rb] : B)
-        if (ra == -1 || rb == -1 || ra == rb) uf.join(pa, pb);
+        if (whole || ra == -1 || rb == -1 || ra == rb) uf.join(pa, pb);
   }
   std::vector<int> piece_of(first_id[T], -1);
   std::vector<Piece> pieces;
@@ -928,7 +990,6 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
         if (parts[t][j].pieces.empty() || parts[t][j].region == own)
           pieces[piece_of[uf.find(first_id[t] + static_cast<int>(j))]].constrained = true;
     }
-  (void)V;
   return pieces;
 }
 

@@ -42,6 +42,9 @@ struct CutsClassification {
     long count = 0;
   };
   std::vector<Product> products;     ///< pairs with at least one product node
+  /// Nodes whose support holds all four sign combinations of two cuts, one of them below
+  /// tiny_support of it: not given the product (the pieces stay joined inside that sliver only).
+  long product_tiny = 0;
 };
 
 /// Classifies `mesh` against every cut (classify() per cut), finds T-junctions (front segments of

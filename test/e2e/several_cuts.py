@@ -85,7 +85,10 @@ def cmd_check(args):
     lo, hi = box_of(pts)
     mo = motions(planes, lo, hi)
     umax = max(norm(rigid(m, x)) for m in mo.values() for x in itertools.product(*zip(lo, hi)))
-    grad = max(norm(m["rotation"]) for m in mo.values())
+    # The motions' gradient scale, as cut_catalogue.py: rotations plus the jumps per body size.
+    size = norm(sub(hi, lo)) / math.sqrt(3)
+    grad = max(norm(m["rotation"]) for m in mo.values()) + \
+        max(norm(sub(m["translation"], n["translation"])) for m in mo.values() for n in mo.values()) / size
     failures = []
     vol = {}
     worst_u, worst_e = (0, None), (0, None)
