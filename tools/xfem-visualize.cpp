@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
                                        "--scale and coloured like the picture (paraview --script=FILE)");
   app.add_option("--scale", scale, "displacement magnification in the picture and script only, dimensionless "
                                    "(files keep the true displacement)")->check(xfem::cli::range(1e-6, 1e6));
+  std::vector<double> view;
+  app.add_option("--view", view, "direction from the body towards the eye (3 numbers, any length) for the picture and "
+                                 "script, instead of the one chosen from the cut (docs/FORMATS.md \"PNG snapshot\")")
+      ->expected(3);
   app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--edges", edges, "element edges in the picture: auto (light grey below 20,000 visible faces, "
@@ -126,10 +130,18 @@ int main(int argc, char** argv) {
     o.edges = no_edges || edges == "off" ? xfem::SnapshotOptions::Edges::Off
               : edges == "on"            ? xfem::SnapshotOptions::Edges::On
                                          : xfem::SnapshotOptions::Edges::Auto;
+    xfem::CutView camera = xfem::cut_view(body.wound);
+    if (!view.empty()) {
+      const Eigen::Vector3d eye(view[0], view[1], view[2]);
+      if (!(eye.norm() > 0) || !eye.allFinite()) throw xfem::Error("--view: the direction must be a non-zero vector");
+      camera.eye = eye.normalized();
+      camera.interior = false;  // a chosen view shows the whole body
+      o.view = camera;
+    }
     if (!png.empty()) xfem::write_snapshot(body.volume, body.wound, png, o);
     xfem::write_tet_mesh(body.volume, output);
     if (!faces.empty()) xfem::write_triangle_mesh(body.wound, faces);
     if (!script.empty())
-      xfem::write_paraview_script(script, output, faces, xfem::cut_view(body.wound), xfem::colour_top(body.volume), scale);
+      xfem::write_paraview_script(script, output, faces, camera, xfem::colour_top(body.volume), scale);
   });
 }

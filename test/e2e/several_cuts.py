@@ -12,6 +12,9 @@
       of its points moves by that region's rigid motion (1e-10 of max|u|), its strain is zero
       (1e-10 of the motions' gradients); the cells' volume per region equals the region's true
       volume in the box (1e-12 relative; the box is the mesh's bounding box); R regions expected.
+  linear --deformed deformed.vtu
+      uniaxial tension along x (cut_catalogue.py problem --linear), exact for cuts normal to z
+      ending inside the body: every point's displacement and every cell's strain (1e-10).
   wedge --deformed deformed.vtu --plane ... --plane ... --inside X Y Z
       the wedge (cells whose centroid lies in the region of the point X Y Z, given by the two
       planes) has zero displacement and zero strain (it is fixed and cut free), while the rest moves.
@@ -25,7 +28,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cut_catalogue import read_vtk_xml, add, sub, mul, dot, cross, norm, tet_volume  # noqa: E402
+from cut_catalogue import read_vtk_xml, add, sub, mul, dot, cross, norm, tet_volume, LINEAR, linear  # noqa: E402
 
 
 def region_of(planes, x):
@@ -169,6 +172,28 @@ def clip_tet(t, p, n):
     return [[t[a], t[b], p1, p2], [t[b], p1, p2, p3], [t[b], p2, p3, p4]]
 
 
+def cmd_linear(args):
+    """Uniaxial tension along x (cut_catalogue.py's LINEAR), exact for cuts normal to z that end
+    inside the body: every point of deformed.vtu and the strain of every cell."""
+    d = read_vtk_xml(args.deformed)
+    pts, disp, strain = d["points"], d["point"]["displacement"], d["cell"]["strain"]
+    G = LINEAR["gradient"]
+    eps = [G[0][0], G[1][1], G[2][2], (G[0][1] + G[1][0]) / 2, (G[1][2] + G[2][1]) / 2, (G[0][2] + G[2][0]) / 2]
+    umax = max(norm(linear(LINEAR, x)) for x in pts)
+    grad = math.sqrt(sum(v * v for row in G for v in row))
+    eu = max(norm(sub(u, linear(LINEAR, x))) for u, x in zip(disp, pts))
+    es = max(strain_norm([a - b for a, b in zip(e, eps)]) for e in strain)
+    failures = []
+    if eu > 1e-10 * umax:
+        failures.append(f"displacement error {eu:.3g} m > 1e-10 x {umax:.3g}")
+    if es > 1e-10 * grad:
+        failures.append(f"strain error {es:.3g} > 1e-10 x {grad:.3g}")
+    for f in failures:
+        print(f)
+    print(f"max displacement error {eu:.3g} m (max|u| {umax:.3g}), max strain error {es:.3g}", file=sys.stderr)
+    return 1 if failures else 0
+
+
 def cmd_wedge(args):
     d = read_vtk_xml(args.deformed)
     pts, cells = d["points"], d["cells"]
@@ -214,12 +239,14 @@ def main():
     p.add_argument("--deformed", required=True)
     p.add_argument("--plane", type=float, nargs=6, action="append", required=True)
     p.add_argument("--regions", type=int, default=0)
+    p = sp.add_parser("linear")
+    p.add_argument("--deformed", required=True)
     p = sp.add_parser("wedge")
     p.add_argument("--deformed", required=True)
     p.add_argument("--plane", type=float, nargs=6, action="append", required=True)
     p.add_argument("--inside", type=float, nargs=3, required=True)
     args = ap.parse_args()
-    return {"problem": cmd_problem, "check": cmd_check, "wedge": cmd_wedge}[args.cmd](args)
+    return {"problem": cmd_problem, "check": cmd_check, "linear": cmd_linear, "wedge": cmd_wedge}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,8 @@
 #   - a wedge resection of the organ (cut 0 reaching past the line where cut 1 ends on it: a
 #     T-junction): without a Dirichlet condition on the wedge xfem-solve names the freed piece; with
 #     the wedge fixed and the ends pulled the wedge does not move (1e-10) and has zero strain;
+#   - two discs ending inside a box (both fronts branch enriched): uniaxial tension parallel to them
+#     reproduced exactly (1e-10), xfem-front on each front (--front-of 0 / 1);
 #   - one cut_id file is the same as two --cut files (same solution bytes);
 #   - every configuration refused: its one-line error.
 set -u
@@ -61,6 +63,47 @@ run_case parallel-u "$S/u.vtu" 3 "$S/p0.vtp" "$S/p1u.vtp" $PLANES_PU || fail par
 run_case crossing-layer "$S/layer.vtu" 4 "$S/x0.vtp" "$S/x1.vtp" $PLANES_X || fail crossing-layer
 run_case crossing-s "$S/s4.vtu" 4 "$S/x0.vtp" "$S/x1.vtp" $PLANES_X || fail crossing-s
 run_case crossing-u "$S/u.vtu" 4 "$S/x0.vtp" "$S/x1u.vtp" $PLANES_XU || fail crossing-u
+
+# Two cuts ending inside the body (discs, normals +z and -z): both fronts branch enriched, uniaxial
+# tension along x (the discs traction-free) reproduced exactly; xfem-front on each front.
+d="$S/fronts"; mkdir -p "$d"
+$M box --cells 6 6 6 --hi 1 1 1 -o "$d/s6.vtu" &&
+  $M cut-disc --center 0.47 0.52 0.29 --normal 0 0 1 --radius 0.25 --rings 4 -o "$d/d0.vtp" &&
+  $M cut-disc --center 0.52 0.47 0.71 --normal 0 0 -1 --radius 0.25 --rings 4 -o "$d/d1.vtp" &&
+  python3 "$XFEM_SOURCE/test/e2e/cut_catalogue.py" problem 0 0 0 1 1 1 --linear -o "$d/problem.json" --exact "$d/exact.json" ||
+  fail "fronts inputs"
+DC="--cut $d/d0.vtp --cut $d/d1.vtp"
+"$B/xfem-classify" "$d/s6.vtu" $DC -o "$d/classified.vtu" --summary "$d/classify.json" 2>"$d/classify.err" &&
+  "$B/xfem-enrich" "$d/classified.vtu" -o "$d/enriched.vtu" 2>"$d/enrich.err" &&
+  "$B/xfem-assemble" "$d/enriched.vtu" $DC --problem "$d/problem.json" -o "$d/system" 2>"$d/assemble.err" &&
+  "$B/xfem-solve" "$d/system" -o "$d/u.mtx" 2>"$d/solve.err" &&
+  "$B/xfem-visualize" "$d/enriched.vtu" $DC --solution "$d/u.mtx" --problem "$d/problem.json" -o "$d/deformed.vtu" 2>"$d/visualize.err" &&
+  "$B/xfem-front" "$d/enriched.vtu" $DC --solution "$d/u.mtx" --problem "$d/problem.json" --radius 0.12 --csv "$d/f0.csv" 2>"$d/front0.err" &&
+  "$B/xfem-front" "$d/enriched.vtu" $DC --solution "$d/u.mtx" --problem "$d/problem.json" --radius 0.12 --front-of 1 --csv "$d/f1.csv" 2>"$d/front1.err" ||
+  fail "fronts: $(cat "$d"/*.err | grep -m1 error)"
+grep -i warning "$d"/*.err && fail "fronts: a stage warned"
+# The same body with disc 0 alone (one cut): K along its front equals front 0 of the two-cut run
+# (both solutions are the exact linear field; the interaction integral sees the same field).
+"$B/xfem-classify" -q "$d/s6.vtu" --cut "$d/d0.vtp" -o "$d/one_classified.vtu" &&
+  "$B/xfem-enrich" -q "$d/one_classified.vtu" -o "$d/one_enriched.vtu" &&
+  "$B/xfem-assemble" -q "$d/one_enriched.vtu" --cut "$d/d0.vtp" --problem "$d/problem.json" -o "$d/one_system" &&
+  "$B/xfem-solve" -q "$d/one_system" -o "$d/one_u.mtx" &&
+  "$B/xfem-front" -q "$d/one_enriched.vtu" --cut "$d/d0.vtp" --solution "$d/one_u.mtx" --problem "$d/problem.json" \
+    --radius 0.12 --csv "$d/one_f0.csv" || fail "fronts: disc 0 alone"
+python3 - "$d/classify.json" "$d/f0.csv" "$d/f1.csv" "$d/one_f0.csv" <<'PY' || fail "fronts: both cuts branch enriched, K along both fronts"
+import csv, json, math, sys
+c = json.load(open(sys.argv[1]))
+assert all(k["branch"] > 0 and k["partial"] > 0 and k["front_segments"] > 0 for k in c["cuts"]), c["cuts"]
+f0, f1, one = (list(csv.DictReader(open(f))) for f in sys.argv[2:])
+assert len(f0) == len(one) >= 4 and len(f1) >= 4
+assert all(math.isfinite(float(r[k])) for r in f0 + f1 for k in ("K_I", "K_II", "K_III"))
+scale = 1e-3 * math.sqrt(math.pi * 0.25)  # sigma sqrt(pi a)
+worst = max(abs(float(a[k]) - float(b[k])) for a, b in zip(f0, one) for k in ("K_I", "K_II", "K_III"))
+print(f"K along front 0 of two cuts vs disc 0 alone: max difference {worst:.2g} (sigma sqrt(pi a) = {scale:.3g})", file=sys.stderr)
+assert worst <= 1e-8 * scale, worst
+PY
+$PY linear --deformed "$d/deformed.vtu" 2>"$d/check.err" || fail "fronts: linear patch test"
+echo "ok fronts: $(cat "$d/check.err")"
 
 # One file with cut_id = the two files: same classification, same solution.
 d="$S/cut-id"; mkdir -p "$d"
@@ -142,9 +185,14 @@ refuse oversampling "^xfem-assemble: error: .*several cuts are integrated by the
   "$B/xfem-assemble" -q "$C/enriched.vtu" --cut "$S/x0.vtp" --cut "$S/x1.vtp" --problem "$C/problem.json" --rule oversampling -o "$S/sys3"
 refuse visualize-one-cut "^xfem-visualize: error: .*classified with 2 cuts, but 1 are given" \
   "$B/xfem-visualize" -q "$C/enriched.vtu" --cut "$S/x0.vtp" --solution "$C/u.mtx" --problem "$C/problem.json" -o "$S/d.vtu"
+refuse front-of-missing "^xfem-front: error: .*enriched.vtu: --front-of 2 but the mesh has 2 cuts \(0..1\)" \
+  "$B/xfem-front" -q "$S/fronts/enriched.vtu" --cut "$S/fronts/d0.vtp" --cut "$S/fronts/d1.vtp" --solution "$S/fronts/u.mtx" \
+  --problem "$S/fronts/problem.json" --front-of 2 --csv "$S/f2.csv"
+refuse rmserror-several "^xfem-rmserror: error: .*enriched.vtu: classified with 2 cuts, but 1 is given \(this tool takes one cut\)" \
+  "$B/xfem-rmserror" -q "$C/enriched.vtu" --cut "$S/x0.vtp" --solution "$C/u.mtx" --exact "$S/fronts/exact.json" -o "$S/e.json"
 printf '# vtk DataFile Version 3.0\nbad cut_id\nASCII\nDATASET POLYDATA\nPOINTS 3 double\n0 0 0.5 2 0 0.5 0 2 0.5\nPOLYGONS 1 4\n3 0 1 2\nCELL_DATA 1\nSCALARS cut_id double 1\nLOOKUP_TABLE default\n0.5\n' >"$S/bad_id.vtk"
 refuse bad-cut-id "^xfem-classify: error: .*bad_id.vtk: cell array 'cut_id' of triangle 0 is not a whole number" \
   "$B/xfem-classify" -q "$S/s4.vtu" --cut "$S/bad_id.vtk" -o "$S/bad.vtu"
-[ ! -e "$S/sys1" ] && [ ! -e "$S/sys2" ] && [ ! -e "$S/sys3" ] && [ ! -e "$S/d.vtu" ] && [ ! -e "$S/bad.vtu" ] || fail "output left behind"
+[ ! -e "$S/f2.csv" ] && [ ! -e "$S/e.json" ] && [ ! -e "$S/sys1" ] && [ ! -e "$S/sys2" ] && [ ! -e "$S/sys3" ] && [ ! -e "$S/d.vtu" ] && [ ! -e "$S/bad.vtu" ] || fail "output left behind"
 echo "several cuts: all cases pass"
 rm -rf "$S"
