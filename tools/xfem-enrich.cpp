@@ -14,7 +14,9 @@ int main(int argc, char** argv) {
       "xfem-enrich",
       "Number the displacements of a classified mesh as the paper does (originals 0..NP-1, sign\n"
       "NP..NP+NS-1, branch NP+NS..N-1, 4 per branch node) and store every element's extended\n"
-      "connectivity C and local ids L (docs/FORMATS.md, enriched.vtu).",
+      "connectivity C and local ids L (docs/FORMATS.md, enriched.vtu). A mesh classified with several\n"
+      "cuts is numbered cut after cut: the sign DOFs of cut 0, 1, ..., the junction (product) DOFs, then\n"
+      "the branch DOFs of cut 0, 1, ... (docs/FORMATS.md \"Several cuts\").",
       "xfem-enrich classified.vtu -o enriched.vtu");
   std::string input, output, cut_path;
   auto& app = tool->app;
