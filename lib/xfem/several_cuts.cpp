@@ -257,6 +257,15 @@ CutsClassification classify_cuts(const TetMesh& mesh, const std::vector<const Cu
         out.ends_side[k] = cuts[i]->side(c);
       }
     }
+    // A cut that ends on cut i and also reaches its other side would lose that part (its function
+    // is 0 there).
+    for (int t = 0; t < cm.triangles.rows(); ++t)
+      for (int n = 0; n < 3; ++n) {
+        const Eigen::Vector3d x = cm.points.row(cm.triangles(t, n)).transpose();
+        if (cuts[i]->closest(x).distance > tol && cuts[i]->side(x) != out.ends_side[k])
+          throw Error("cut " + std::to_string(k) + " ends on cut " + std::to_string(i) + " and also reaches its other side "
+                      "(triangle " + std::to_string(t) + "): not handled; split it into two cuts");
+      }
     // Its tets along the junction are cut through now; branch nodes only where a front remains.
     Classification& c = out.cuts[k];
     c.front = CrackFront(remaining);

@@ -204,6 +204,13 @@ TEST_CASE("several cuts: configurations not handled are refused, naming them", "
                                   plane(V3(0.45, -1, 0.45), V3(0, 3, 0), V3(1, 0, 1))}),
                         Contains("cuts 0 and 1 end on each other (a V-shaped junction)"));
   }
+  SECTION("a cut ending on another and also reaching its other side") {
+    // Cut 1: a piece ending on cut 0 (z = 0.55) from above, and a piece crossing it at x = 0.2.
+    const xfem::TriangleMesh ends = plane(V3(0.7, -1, 0.55), V3(0, 3, 0), V3(0, 0, 3));
+    const xfem::TriangleMesh crosses = plane(V3(0.2, -1, 0.1), V3(0, 3, 0), V3(0, 0, 3));
+    REQUIRE_THROWS_WITH(classify({plane(V3(-1, -1, 0.55), V3(3, 0, 0), V3(0, 3, 0)), xfem::merge_surfaces({ends, crosses})}),
+                        Contains("cut 1 ends on cut 0 and also reaches its other side"));
+  }
   SECTION("the fronts of two cuts in one tet") {
     REQUIRE_THROWS_WITH(classify({xfem::cut_disc(V3(0.5, 0.5, 0.47), V3(0, 0, 1), 0.3, 4),
                                   xfem::cut_disc(V3(0.5, 0.5, 0.55), V3(0, 0, 1), 0.3, 4)}),
