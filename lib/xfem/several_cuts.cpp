@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <cstdint>
 #include <cstdio>
 #include <set>
 
@@ -323,8 +324,18 @@ CutsClassification classify_cuts(const TetMesh& mesh, const std::vector<const Cu
     split_tet(corners(mesh, t), cuts, classes, fronts, pieces, sides);
     for (std::size_t q = 0; q < pieces.size(); ++q) {
       const double v = std::abs(signed_volume(pieces[q][0], pieces[q][1], pieces[q][2], pieces[q][3]));
-      const int code = region_code(out.ends_on, out.ends_side, sides[q].data(), K);
       for (int n = 0; n < 4; ++n) {
+        // A cut that does not cut the tet has the node's own side all over it (as a sign DOF of one
+        // cut enters cut tets only): ahead of a front its plane extended is no discontinuity. Not
+        // for a node on the far side of the cut a junction cut ends on: its own side of the
+        // junction cut means nothing there (the plane extended); the piece's is the tet's.
+        Sides e = sides[q];
+        const int node = mesh.tets(t, n);
+        for (int k = 0; k < K; ++k) {
+          const int i = out.ends_on[k];
+          if (classes[k] == 0 && !(i >= 0 && out.cuts[i].side[node] != out.ends_side[k])) e[k] = out.cuts[k].side[node];
+        }
+        const int code = region_code(out.ends_on, out.ends_side, e.data(), K);
         auto& r = region[mesh.tets(t, n)];
         auto it = std::find_if(r.begin(), r.end(), [&](const auto& e) { return e.first == code; });
         if (it == r.end())
@@ -744,6 +755,8 @@ void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, co
   int node_sides[4][kMaxCuts];
   for (int l = 0; l < 4; ++l)
     for (int k = 0; k < K; ++k) node_sides[l][k] = em.cuts[k].side[em.mesh.tets(t, l)];
+  bool cutting[kMaxCuts];
+  for (int k = 0; k < K; ++k) cutting[k] = em.cuts[k].cut_class[t] != 0;
   int branch_cut = -1;
   BranchValues F;
   for (int e = 0; e < n; ++e) {
@@ -755,19 +768,27 @@ void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, co
       continue;
     }
     if (dof < em.np + em.ns) {
+      // x's sides, except for the cuts that do not cut the tet: the node's own (the enrichment of
+      // a cut jumps only where it cuts; ahead of a front its plane extended is no discontinuity).
+      int xs[kMaxCuts];
+      // (For a node on the far side of the cut a junction cut ends on, x's own: see classify_cuts.)
+      for (int k = 0; k < K; ++k) {
+        const int i = em.cuts[k].ends_on;
+        const bool far = i >= 0 && node_sides[l][i] != em.cuts[k].ends_side;
+        xs[k] = cutting[k] || far ? sides()[k] : node_sides[l][k];
+      }
       double psi = 0;
       bool found = false;
       for (int k = 0; k < K && !found; ++k) {
         const CutLayer& c = em.cuts[k];
         if (dof >= c.sign_first && dof < c.sign_first + c.ns) {
-          psi = 0.5 * (cut_function(em, k, sides()) - cut_function(em, k, node_sides[l]));
+          psi = 0.5 * (cut_function(em, k, xs) - cut_function(em, k, node_sides[l]));
           found = true;
         }
       }
       for (std::size_t p = 0; p < em.products.size() && !found; ++p) {
         const ProductBlock& b = em.products[p];
         if (dof >= b.first && dof < b.first + b.count) {
-          const int* xs = sides();
           psi = 0.5 * (cut_function(em, b.a, xs) * cut_function(em, b.b, xs) -
                        cut_function(em, b.a, node_sides[l]) * cut_function(em, b.b, node_sides[l]));
           found = true;
@@ -865,14 +886,26 @@ CutElementSplits split_cut_elements_several(const EnrichedMesh& em) {
 
 namespace {
 
-/// Region code (values of every g_k) of a side code.
-int region_of_code(const EnrichedMesh& em, int code) {
-  const int K = static_cast<int>(em.cuts.size());
-  int s[kMaxCuts];
-  for (int k = 0; k < K; ++k) s[k] = code_side(code, k);
-  int region = 0;
-  for (int k = K - 1; k >= 0; --k) region = 3 * region + cut_function(em, k, s) + 1;
-  return region;
+/// A part's key: per cut, the value g_k + 1 (0..2) for the cuts that cut its tet, 3 (any) for the
+/// others (the tet is whole for them), base 4. Two parts are the same region where they meet when
+/// every cut has equal values or "any" in either.
+using PartKey = std::uint64_t;
+constexpr unsigned kAny = 3;
+PartKey part_key(const EnrichedMesh& em, int t, const int* sides) {
+  PartKey key = 0;
+  for (int k = static_cast<int>(em.cuts.size()) - 1; k >= 0; --k)
+    key = 4 * key + (em.cuts[k].cut_class[t] != 0 ? static_cast<unsigned>(cut_function(em, k, sides) + 1) : kAny);
+  return key;
+}
+PartKey any_key(int cuts) {
+  PartKey key = 0;
+  for (int k = 0; k < cuts; ++k) key = 4 * key + kAny;
+  return key;
+}
+bool same_region(PartKey a, PartKey b, int cuts) {
+  for (int k = 0; k < cuts; ++k, a /= 4, b /= 4)
+    if (a % 4 != kAny && b % 4 != kAny && a % 4 != b % 4) return false;
+  return true;
 }
 
 struct UnionFind {
@@ -898,34 +931,27 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
   // Parts: an uncut tet is one, a tet a front runs through is one touching every region (the
   // material is whole around the front), a cut tet one per region of its pieces.
   struct Part {
-    int region;  ///< -1: every region
+    PartKey key;
     std::vector<int> pieces;
   };
   std::vector<std::vector<Part>> parts(T);
   std::vector<int> first_id(T + 1, 0);
-  std::vector<int> uncut_region(T, -2);
-  auto region_of_tet = [&](int t) {
-    if (uncut_region[t] == -2) {
-      const TetCorners p = corners(em.mesh, t);
-      const Eigen::Vector3d c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-      int s[kMaxCuts];
-      for (int k = 0; k < K; ++k) s[k] = em.cuts[k].cut->side(c);
-      uncut_region[t] = region_of_code(em, pack_sides(s, K));
-    }
-    return uncut_region[t];
-  };
+  int sides[kMaxCuts];
   for (int t = 0; t < T; ++t) {
     const int i = splits.index[t];
     bool partial = false;
     for (int k = 0; k < K; ++k) partial = partial || em.cuts[k].cut_class[t] == 1;
     if (i < 0 || partial) {
-      parts[t].push_back({i < 0 ? -3 : -1, {}});  // -3: uncut, region decided on need
+      parts[t].push_back({any_key(K), {}});
     } else {
       for (int q = splits.first[i]; q < splits.first[i + 1]; ++q) {
-        const int r = region_of_code(em, splits.side[q]);
-        auto it = std::find_if(parts[t].begin(), parts[t].end(), [&](const Part& p) { return p.region == r; });
-        if (it == parts[t].end()) parts[t].push_back({r, {q}});
-        else it->pieces.push_back(q);
+        for (int k = 0; k < K; ++k) sides[k] = code_side(splits.side[q], k);
+        const PartKey key = part_key(em, t, sides);
+        auto it = std::find_if(parts[t].begin(), parts[t].end(), [&](const Part& p) { return p.key == key; });
+        if (it == parts[t].end())
+          parts[t].push_back({key, {q}});
+        else
+          it->pieces.push_back(q);
       }
     }
     first_id[t + 1] = first_id[t] + static_cast<int>(parts[t].size());
@@ -945,12 +971,12 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
       faces.push_back(f);
     }
   std::sort(faces.begin(), faces.end());
-  // The parts of tet t with a face on the face opposite corner `skip`, with their regions.
-  auto touching = [&](int t, int skip, std::vector<std::pair<int, int>>& out) {
+  // The parts of tet t with a face on the face opposite corner `skip`, with their keys.
+  auto touching = [&](int t, int skip, std::vector<std::pair<int, PartKey>>& out) {
     out.clear();
     const auto& ps = parts[t];
     if (ps.size() == 1 && ps[0].pieces.empty()) {
-      out.push_back({first_id[t], ps[0].region == -3 ? region_of_tet(t) : -1});
+      out.push_back({first_id[t], ps[0].key});
       return;
     }
     TetCorners p = corners(em.mesh, t);
@@ -964,19 +990,18 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
         for (const auto& x : splits.tets[q]) count += std::abs(nrm.dot(x - a)) <= tol;
         on = on || count >= 3;
       }
-      if (on) out.push_back({first_id[t] + static_cast<int>(j), ps[j].region});
+      if (on) out.push_back({first_id[t] + static_cast<int>(j), ps[j].key});
     }
   };
-  std::vector<std::pair<int, int>> A, B;
+  std::vector<std::pair<int, PartKey>> A, B;
   for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
     const auto &f = faces[i], &g = faces[i + 1];
     if (f[0] != g[0] || f[1] != g[1] || f[2] != g[2]) continue;
     touching(f[3], f[4], A);
     touching(g[3], g[4], B);
-    const bool whole = splits.index[f[3]] < 0 && splits.index[g[3]] < 0;  // two uncut tets: always joined
-    for (const auto& [pa, ra] : A)
-      for (const auto& [pb, rb] : B)
-        if (whole || ra == -1 || rb == -1 || ra == rb) uf.join(pa, pb);
+    for (const auto& [pa, ka] : A)
+      for (const auto& [pb, kb] : B)
+        if (same_region(ka, kb, K)) uf.join(pa, pb);
   }
   std::vector<int> piece_of(first_id[T], -1);
   std::vector<Piece> pieces;
@@ -992,11 +1017,10 @@ std::vector<Piece> find_pieces_several(const EnrichedMesh& em, const std::vector
     for (int c = 0; c < 4; ++c) {
       const int v = em.mesh.tets(t, c);
       if (!node_constrained[v]) continue;
-      int s[kMaxCuts];
-      for (int k = 0; k < K; ++k) s[k] = em.cuts[k].side[v];
-      const int own = region_of_code(em, pack_sides(s, K));
+      for (int k = 0; k < K; ++k) sides[k] = em.cuts[k].side[v];
+      const PartKey own = part_key(em, t, sides);
       for (std::size_t j = 0; j < parts[t].size(); ++j)
-        if (parts[t][j].pieces.empty() || parts[t][j].region == own)
+        if (same_region(parts[t][j].key, own, K))
           pieces[piece_of[uf.find(first_id[t] + static_cast<int>(j))]].constrained = true;
     }
   return pieces;
