@@ -14,6 +14,7 @@
 #include "xfem/fingerprint.h"
 #include "xfem/linear_system.h"
 #include "xfem/problem.h"
+#include "xfem/several_cuts.h"
 #include "xfem/reactions.h"
 #include "xfem/version.h"
 
@@ -38,13 +39,16 @@ int main(int argc, char** argv) {
       "dirichlet_conditions.json (which condition fixes which DOF, for reaction forces). Units SI: metres,\n"
       "pascals, newtons.",
       "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json -o out/system");
-  std::string input, cut_path, problem_path, output;
+  std::string input, problem_path, output;
+  std::vector<std::string> cut_paths;
   int points = 0, refine = -1, order = 0;
   std::string rule, format = "petsc";
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface given to xfem-classify (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
-                                       "needed when the mesh has enriched DOFs (N > NP)");
+  app.add_option("-c,--cut", cut_paths, "the cut surface given to xfem-classify (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
+                                        "needed when the mesh has enriched DOFs (N > NP); several cuts: once per "
+                                        "cut, as given to xfem-classify")
+      ->allow_extra_args(false);
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
                                                "dirichlet, neumann, body_force)")->required();
   app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
@@ -88,12 +92,11 @@ int main(int argc, char** argv) {
     if (order > 0) problem.order = order;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
     std::vector<std::string> warnings;
-    const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
+    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
-    if (cut_path.empty() && em.n > em.np)
+    if (cut_paths.empty() && em.n > em.np)
       throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
-    if (em.cut) xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
     {  // cost guard: integration points of the tets with enriched DOFs
@@ -131,6 +134,7 @@ int main(int argc, char** argv) {
     xfem::Provenance provenance{{"enriched", xfem::fingerprint(em.mesh)},
                                 {"problem", xfem::fingerprint_json_file(problem_path)}};
     if (em.cut) provenance["cut"] = xfem::fingerprint(em.cut->mesh());
+    for (std::size_t k = 1; k < em.cuts.size(); ++k) provenance["cut_" + std::to_string(k)] = xfem::fingerprint(em.cuts[k].cut->mesh());
     const std::string provenance_path = (std::filesystem::path(output) / "provenance.json").string();
     xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version,
                               format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc);

@@ -8,6 +8,7 @@
 #include "xfem/error.h"
 #include "xfem/fingerprint.h"
 #include "xfem/json_io.h"
+#include "xfem/several_cuts.h"
 #include "xfem/version.h"
 #include "xfem/vtk_io.h"
 
@@ -19,13 +20,17 @@ int main(int argc, char** argv) {
       "(none / sign / branch), and the cut front inside the body. Writes them as arrays on the mesh\n"
       "(docs/FORMATS.md, classified.vtu); degenerate geometry by the rules of docs/CLASSIFICATION.md.",
       "xfem-classify beam.vtu --cut cut.vtp -o classified.vtu --summary counts.json");
-  std::string body, cut_path, output, summary;
+  std::string body, output, summary;
+  std::vector<std::string> cut_paths;
   double tip_radius = 0.0, tiny_support = 1e-7;
   auto& app = tool->app;
   app.add_option("body", body, "tetrahedral mesh of the body (.vtu/.vtk, or gmsh .msh 2.2/4.x: its physical groups become point arrays group_<name>)")->required();
-  app.add_option("-c,--cut", cut_path,
+  app.add_option("-c,--cut", cut_paths,
                  "cut surface of triangles (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); without it the mesh is plain (e.g. a "
-                 "cut-aligned mesh with doubled nodes): everything uncut, no enrichment");
+                 "cut-aligned mesh with doubled nodes): everything uncut, no enrichment. Several cuts: repeat --cut "
+                 "(cut 0, 1, ... in that order), or one file whose triangles carry the cell array cut_id (one cut per "
+                 "value, increasing); docs/FORMATS.md \"Several cuts\"")
+      ->allow_extra_args(false);
   app.add_option("-o,--output", output, "classified mesh (.vtu)")->required();
   app.add_option("--summary", summary, "also write the counts as JSON ('-' = stdout)");
   app.add_option("--tip-radius", tip_radius,
@@ -41,9 +46,69 @@ int main(int argc, char** argv) {
     if (!summary.empty()) xfem::cli::check_output(summary, {".json"}, true);
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(body, &warnings);
-    std::unique_ptr<xfem::CutSurface> cut;
-    if (!cut_path.empty()) cut = std::make_unique<xfem::CutSurface>(xfem::read_triangle_mesh(cut_path, &warnings));
+    std::vector<std::string> cut_names;
+    std::vector<xfem::TriangleMesh> meshes = xfem::read_cuts(cut_paths, cut_names, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
+    const std::string cut_path = cut_names.empty() ? std::string() : cut_names[0];
+    if (meshes.size() > 1) {  // several cuts (docs/FORMATS.md "Several cuts")
+      std::vector<xfem::CutSurface> surfaces;
+      for (auto& m : meshes) surfaces.emplace_back(m);
+      std::vector<const xfem::CutSurface*> cuts;
+      for (const auto& c : surfaces) cuts.push_back(&c);
+      xfem::ClassifyOptions options;
+      options.tip_radius = tip_radius;
+      options.tiny_support = tiny_support;
+      options.progress = xfem::cli::progress("classifying");
+      const xfem::CutsClassification c = [&] {
+        try {
+          return xfem::classify_cuts(mesh, cuts, options);
+        } catch (const xfem::Error& e) {
+          throw xfem::Error(body + ": " + e.what());
+        }
+      }();
+      xfem::store_cuts_classification(c, mesh);
+      xfem::store_cut_fingerprints(meshes, mesh);
+      xfem::write_tet_mesh(mesh, output);
+      xfem::Json j;
+      j["generator"] = std::string("xfem-classify ") + xfem::version;
+      j["body"] = body;
+      j["cut"] = cut_names;
+      j["tip_radius"] = tip_radius;
+      j["tiny_support"] = tiny_support;
+      j["cuts"] = xfem::Json::array();
+      const auto count_names = xfem::count_names();
+      for (std::size_t k = 0; k < c.cuts.size(); ++k) {
+        const auto& n = c.cuts[k].counts;
+        xfem::cli::info("cut " + std::to_string(k) + " (" + cut_names[k] + "): " + std::to_string(n.partial) + " partially and " +
+                        std::to_string(n.complete) + " completely cut tets; " + std::to_string(n.sign) + " sign, " +
+                        std::to_string(n.branch) + " branch nodes; " + std::to_string(n.front_segments) +
+                        " front segments" +
+                        (c.ends_on[k] >= 0 ? "; ends on cut " + std::to_string(c.ends_on[k]) + " (junction)" : ""));
+        xfem::Json cj;
+        cj["cut"] = cut_names[k];
+        cj["ends_on"] = c.ends_on[k];
+        const auto values = xfem::count_values(n);
+        for (std::size_t i = 0; i < count_names.size(); ++i) cj[count_names[i]] = values[i];
+        j["cuts"].push_back(cj);
+      }
+      j["products"] = xfem::Json::array();
+      for (const auto& p : c.products) {
+        xfem::cli::info("cuts " + std::to_string(p.a) + " and " + std::to_string(p.b) + " cross: " +
+                        std::to_string(p.count) + " nodes with the junction enrichment H_" + std::to_string(p.a) + " H_" +
+                        std::to_string(p.b));
+        j["products"].push_back(xfem::Json{{"a", p.a}, {"b", p.b}, {"nodes", p.count}});
+      }
+      j["product_tiny"] = c.product_tiny;
+      if (c.product_tiny > 0)
+        xfem::cli::detail(std::to_string(c.product_tiny) +
+                          " nodes are not given a junction enrichment: one of the four sign combinations of two "
+                          "crossing cuts holds less than --tiny-support of their support (the cuts' pieces stay "
+                          "joined inside that sliver)");
+      if (!summary.empty()) xfem::write_json(j, summary);
+      return;
+    }
+    std::unique_ptr<xfem::CutSurface> cut;
+    if (!meshes.empty()) cut = std::make_unique<xfem::CutSurface>(std::move(meshes[0]));
 
     const double start = xfem::cli::now();
     xfem::ClassifyOptions options;

@@ -6,6 +6,7 @@
 #include "xfem/crack_front.h"
 #include "xfem/dof_numbering.h"
 #include "xfem/error.h"
+#include "xfem/several_cuts.h"
 #include "xfem/vtk_io.h"
 
 int main(int argc, char** argv) {
@@ -13,7 +14,9 @@ int main(int argc, char** argv) {
       "xfem-enrich",
       "Number the displacements of a classified mesh as the paper does (originals 0..NP-1, sign\n"
       "NP..NP+NS-1, branch NP+NS..N-1, 4 per branch node) and store every element's extended\n"
-      "connectivity C and local ids L (docs/FORMATS.md, enriched.vtu).",
+      "connectivity C and local ids L (docs/FORMATS.md, enriched.vtu). A mesh classified with several\n"
+      "cuts is numbered cut after cut: the sign DOFs of cut 0, 1, ..., the junction (product) DOFs, then\n"
+      "the branch DOFs of cut 0, 1, ... (docs/FORMATS.md \"Several cuts\").",
       "xfem-enrich classified.vtu -o enriched.vtu");
   std::string input, output, cut_path;
   auto& app = tool->app;
@@ -26,6 +29,14 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(input, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
+    if (xfem::cut_count(mesh) > 1) {  // several cuts (docs/FORMATS.md "Several cuts")
+      const xfem::DofNumbering d = xfem::number_several_cuts(mesh, input);
+      xfem::write_tet_mesh(mesh, output);
+      xfem::cli::info(std::to_string(xfem::cut_count(mesh)) + " cuts: NP " + std::to_string(d.np) + ", NS " +
+                      std::to_string(d.ns) + " (sign and junction), NB " + std::to_string(d.nb) + ": N = " +
+                      std::to_string(d.n) + " displacements, " + std::to_string(3 * d.n) + " unknowns");
+      return;
+    }
     const std::size_t V = mesh.points.rows(), T = mesh.tets.rows();
     auto ints = [](const xfem::DataArray& a) { return std::vector<int>(a.values.begin(), a.values.end()); };
     const auto& enrichment = xfem::require_array(mesh.point_data, "enrichment", "point", 1, V, input, "xfem-classify");

@@ -12,6 +12,7 @@
 #include "xfem/error.h"
 #include "xfem/matrix_market.h"
 #include "xfem/problem.h"
+#include "xfem/several_cuts.h"
 #include "xfem/stress_intensity.h"
 
 namespace {
@@ -54,11 +55,18 @@ int main(int argc, char** argv) {
       "(docs/FORMATS.md \"front.vtp\", \"front.csv\").",
       "xfem-front enriched.vtu --cut cut.vtp --solution u.mtx --problem problem.json \\\n"
       "      -o front.vtp --csv front.csv --png front.png --radius 0.01");
-  std::string input, cut_path, solution, problem_path, output, csv, png, title;
+  std::string input, solution, problem_path, output, csv, png, title;
+  std::vector<std::string> cut_paths;
+  int front_of = 0;
   xfem::FrontSifOptions options;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with")->required();
+  app.add_option("-c,--cut", cut_paths, "the cut surface the mesh was classified with; several cuts: once per cut, "
+                                        "as given to xfem-classify")
+      ->required()
+      ->allow_extra_args(false);
+  app.add_option("--front-of", front_of, "with several cuts: the cut (0, 1, ...) whose front to evaluate (default 0)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E, nu; body force)")->required();
   app.add_option("-o,--output", output, "front polyline with K_I, K_II, K_III, G (.vtp)");
@@ -81,7 +89,17 @@ int main(int argc, char** argv) {
   return xfem::cli::run(*tool, argc, argv, [&] {
     const xfem::Problem problem = xfem::read_problem(problem_path);
     std::vector<std::string> warnings;
-    const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
+    xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
+    if (!em.cuts.empty()) {  // several cuts: the front, classes and surface of cut --front-of
+      if (front_of >= static_cast<int>(em.cuts.size()))
+        throw xfem::Error(input + ": --front-of " + std::to_string(front_of) + " but the mesh has " +
+                          std::to_string(em.cuts.size()) + " cuts (0.." + std::to_string(em.cuts.size() - 1) + ")");
+      em.front = em.cuts[front_of].front;
+      em.cut_class = em.cuts[front_of].cut_class;
+      em.cut = em.cuts[front_of].cut;
+    } else if (front_of != 0) {
+      throw xfem::Error(input + ": --front-of " + std::to_string(front_of) + " but the mesh has one cut");
+    }
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");
     const Eigen::VectorXd u = xfem::read_vector(solution);

@@ -156,6 +156,10 @@ int main(int argc, char** argv) {
                                           "keeping its orientation; arrays are dropped",
                         "cut-merge upper.vtp lower.vtp -o two_pieces.vtp", out);
   merge->add_option("inputs", merge_inputs, "cut surfaces (.vtp/.vtk/.stl/.obj/.off)")->required()->expected(2, -1);
+  bool merge_cut_id = false;
+  merge->add_flag("--cut-id", merge_cut_id, "store the cell array cut_id (Int32: 0 for the first input's triangles, "
+                                            "1 for the second's, ...): the file then holds several cuts, each with "
+                                            "its own side function (docs/FORMATS.md \"Several cuts\")");
 
   std::vector<double> sweep_path;
   V3 arc_centre{0, 0, 0}, arc_axis{0, 0, 1}, down{0, 0, -1};
@@ -260,7 +264,14 @@ int main(int argc, char** argv) {
         pieces.push_back(xfem::read_triangle_mesh(in, &warnings));
         for (const auto& w : warnings) xfem::cli::warn(w);
       }
-      write_cut(xfem::merge_surfaces(pieces), out);
+      xfem::TriangleMesh merged = xfem::merge_surfaces(pieces);
+      if (merge_cut_id) {
+        xfem::DataArray id = xfem::make_array(xfem::DataArray::Type::Int32, 1, merged.triangles.rows());
+        for (std::size_t p = 0, t = 0; p < pieces.size(); ++p)
+          for (Eigen::Index f = 0; f < pieces[p].triangles.rows(); ++f) id.values[t++] = static_cast<double>(p);
+        merged.cell_data["cut_id"] = std::move(id);
+      }
+      write_cut(merged, out);
     }
   });
 }

@@ -12,6 +12,7 @@
 #include "xfem/matrix_market.h"
 #include "xfem/paraview_script.h"
 #include "xfem/problem.h"
+#include "xfem/several_cuts.h"
 #include "xfem/reactions.h"
 #include "xfem/snapshot.h"
 #include "xfem/vtk_io.h"
@@ -27,13 +28,16 @@ int main(int argc, char** argv) {
       "is shown as it is (plain CG-FEM meshes, doubled nodes included).",
       "xvfb-run -a xfem-visualize enriched.vtu --cut cut.vtp --solution u.mtx --problem problem.json \\\n"
       "      -o deformed.vtu --faces wound.vtp --png beam.png --scale 2 --reactions r.mtx --paraview deformed.py");
-  std::string input, cut_path, solution, problem_path, output, faces, png, title, reactions_path, script, edges = "auto";
+  std::string input, solution, problem_path, output, faces, png, title, reactions_path, script, edges = "auto";
   double scale = 1.0;
   int width = 1200, height = 900;
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
-  app.add_option("-c,--cut", cut_path, "the cut surface the mesh was classified with (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
-                                       "omit for a mesh without enriched DOFs");
+  std::vector<std::string> cut_paths;
+  app.add_option("-c,--cut", cut_paths, "the cut surface the mesh was classified with (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
+                                        "omit for a mesh without enriched DOFs; several cuts: once per cut, as given "
+                                        "to xfem-classify")
+      ->allow_extra_args(false);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, for the stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
@@ -45,6 +49,10 @@ int main(int argc, char** argv) {
                                        "--scale and coloured like the picture (paraview --script=FILE)");
   app.add_option("--scale", scale, "displacement magnification in the picture and script only, dimensionless "
                                    "(files keep the true displacement)")->check(xfem::cli::range(1e-6, 1e6));
+  std::vector<double> view;
+  app.add_option("--view", view, "direction from the body towards the eye (3 numbers, any length) for the picture and "
+                                 "script, instead of the one chosen from the cut (docs/FORMATS.md \"PNG snapshot\")")
+      ->expected(3);
   app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--edges", edges, "element edges in the picture: auto (light grey below 20,000 visible faces, "
@@ -65,12 +73,12 @@ int main(int argc, char** argv) {
       throw xfem::Error(png + ": rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
     const xfem::Problem problem = xfem::read_problem(problem_path);
     std::vector<std::string> warnings;
-    const xfem::EnrichedMesh em = xfem::read_enriched_mesh(input, cut_path, &warnings);
+    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
+    const std::string cut_path = cut_paths.empty() ? std::string() : cut_paths[0];
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (cut_path.empty() && em.n > em.np)
       throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
-    if (em.cut) xfem::check_cut_matches(em.mesh, input, em.cut->mesh(), cut_path);
     const Eigen::VectorXd u = xfem::read_vector(solution);
     if (u.size() != 3 * em.n)
       throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
@@ -85,11 +93,15 @@ int main(int argc, char** argv) {
     const xfem::Provenance made_for = xfem::read_mtx_provenance(solution);
     xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), input);
     if (em.cut) xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
+    for (std::size_t k = 1; k < em.cuts.size(); ++k)
+      xfem::check_provenance(made_for, solution, "cut_" + std::to_string(k), xfem::fingerprint(em.cuts[k].cut->mesh()),
+                             cut_paths.size() == em.cuts.size() ? cut_paths[k] : cut_path);
     xfem::check_provenance(made_for, solution, "problem", xfem::fingerprint_json_file(problem_path), problem_path);
 
     const xfem::SplitMesh split =
-        cut_path.empty() ? xfem::unsplit_mesh(em.mesh, em.side)
-                         : xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
+        cut_path.empty()    ? xfem::unsplit_mesh(em.mesh, em.side)
+        : !em.cuts.empty() ? xfem::split_mesh_several(em)
+                           : xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +
                     std::to_string(split.split_partial) + " split behind the front: " +
                     std::to_string(split.tets.rows()) + " tets, " + std::to_string(split.points.rows()) + " points, " +
@@ -100,7 +112,7 @@ int main(int argc, char** argv) {
     xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
                                                   problem.nu, xfem::cli::progress("evaluating"), wound_offset);
     if (!reactions_path.empty()) body.volume.point_data["reaction"] = xfem::reaction_array(reactions, em.np, split.points.rows());
-    if (em.cut) {
+    if (em.cut && em.cuts.empty()) {  // several cuts: the pieces carry side codes, no +-1 pairs
       const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),
                                              [&](const Eigen::Vector3d& x) {
                                                return em.cut->unit_normal(em.cut->closest(x).triangle);
@@ -118,10 +130,18 @@ int main(int argc, char** argv) {
     o.edges = no_edges || edges == "off" ? xfem::SnapshotOptions::Edges::Off
               : edges == "on"            ? xfem::SnapshotOptions::Edges::On
                                          : xfem::SnapshotOptions::Edges::Auto;
+    xfem::CutView camera = xfem::cut_view(body.wound);
+    if (!view.empty()) {
+      const Eigen::Vector3d eye(view[0], view[1], view[2]);
+      if (!(eye.norm() > 0) || !eye.allFinite()) throw xfem::Error("--view: the direction must be a non-zero vector");
+      camera.eye = eye.normalized();
+      camera.interior = false;  // a chosen view shows the whole body
+      o.view = camera;
+    }
     if (!png.empty()) xfem::write_snapshot(body.volume, body.wound, png, o);
     xfem::write_tet_mesh(body.volume, output);
     if (!faces.empty()) xfem::write_triangle_mesh(body.wound, faces);
     if (!script.empty())
-      xfem::write_paraview_script(script, output, faces, xfem::cut_view(body.wound), xfem::colour_top(body.volume), scale);
+      xfem::write_paraview_script(script, output, faces, camera, xfem::colour_top(body.volume), scale);
   });
 }

@@ -9,6 +9,7 @@
 
 #include "xfem/branch_functions.h"
 #include "xfem/conforming_quadrature.h"
+#include "xfem/several_cuts.h"
 #include "xfem/error.h"
 #include "xfem/pieces.h"
 #include "xfem/tet_shape.h"
@@ -371,6 +372,8 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   sys.nb = em.nb;
   sys.n = em.n;
   const bool conforming = problem.rule == Problem::Rule::Conforming;
+  if (!em.cuts.empty() && !conforming)
+    throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
                            conforming ? problem.order : 0);
   const auto clock = std::chrono::steady_clock::now();
@@ -379,7 +382,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   std::vector<char> node_constrained(em.mesh.points.rows(), 0);
   for (long dof : sys.fixed)  // enriched DOFs (exact conditions) do not hold a piece in place
     if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
-  sys.pieces = find_pieces(em, node_constrained);
+  sys.pieces = em.cuts.empty() ? find_pieces(em, node_constrained) : find_pieces_several(em, node_constrained);
   sys.coordinates = em.mesh.points;
   s.load_seconds += seconds_since(clock);
   return sys;

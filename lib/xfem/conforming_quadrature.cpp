@@ -9,6 +9,7 @@
 #include "xfem/consistent_gradients.h"
 #include "xfem/cut_pieces.h"
 #include "xfem/enriched_basis.h"
+#include "xfem/several_cuts.h"
 #include "xfem/error.h"
 #include "xfem/tet_shape.h"
 
@@ -218,6 +219,7 @@ namespace {
 }  // namespace
 
 CutElementSplits split_cut_elements(const EnrichedMesh& em) {
+  if (!em.cuts.empty()) return split_cut_elements_several(em);
   CutElementSplits out;
   const int tets = em.tets();
   out.index.assign(tets, -1);
@@ -249,7 +251,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   if (i < 0) {
     std::array<Eigen::Vector3d, 4> p;
     for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    append_tet_rule(p, em.front, n, 0, out);
+    append_tet_rule(p, front_of_tet(em, t), n, 0, out);
     return;
   }
   // The sign enrichment is constant on each piece and the shape functions linear: one point per
@@ -259,7 +261,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
     const auto& q = splits.tets[s];
     if (branch) {
-      append_tet_rule(q, em.front, n, splits.side[s], out);
+      append_tet_rule(q, front_of_tet(em, t), n, splits.side[s], out);
     } else {
       out.x.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
       out.weights.push_back(std::abs(signed_volume(q[0], q[1], q[2], q[3])));

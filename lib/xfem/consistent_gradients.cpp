@@ -10,6 +10,7 @@
 #include "xfem/conforming_quadrature.h"
 #include "xfem/cut_pieces.h"
 #include "xfem/mesh.h"
+#include "xfem/several_cuts.h"
 #include "xfem/tet_shape.h"
 
 namespace xfem {
@@ -155,6 +156,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     if (em.dofs[begin + k] >= em.np + em.ns)
       entries.push_back({k, em.local[begin + k], static_cast<int>((em.dofs[begin + k] - em.np - em.ns) % 4)});
   if (entries.empty()) return out;
+  // With several cuts: the cut whose branch DOFs the tet holds (several_cuts.h).
+  const CutSurface* const cut = cut_of_tet(em, t);
+  const CrackFront& front = front_of_tet(em, t);
 
   std::vector<double> nodes, weights;
   gauss_legendre_01(order, nodes, weights);
@@ -170,7 +174,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) h = std::max(h, (corner[i] - corner[j]).norm());
   const double tolerance = 1e-12 * h;
-  const std::vector<int> meeting = em.cut ? em.cut->triangles_meeting(corner) : std::vector<int>();
+  const std::vector<int> meeting = cut ? cut->triangles_meeting(corner) : std::vector<int>();
   // The front segments near the tet (its bounding box, grown by the tolerance).
   Eigen::Vector3d lo = corner[0], hi = corner[0];
   for (const auto& x : corner) {
@@ -178,7 +182,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     hi = hi.cwiseMax(x);
   }
   std::vector<const FrontSegment*> fronts;
-  for (const FrontSegment& segment : em.front.segments())
+  for (const FrontSegment& segment : front.segments())
     if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
         (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
       fronts.push_back(&segment);
@@ -209,9 +213,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     Polygon above, below;
     for (const int tri : meeting) {
       Eigen::Vector3d p, q;
-      if (!crossing_segment(*em.cut, tri, A, normal, face_tolerance, p, q)) continue;
-      const Eigen::Vector3d cut_normal = em.cut->unit_normal(tri);
-      const Eigen::Vector3d cut_point = em.cut->mesh().points.row(em.cut->mesh().triangles(tri, 0)).transpose();
+      if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
+      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
+      const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
       next.clear();
       for (const Polygon& part : parts) {
         split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
@@ -258,16 +262,16 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
       centre /= static_cast<double>(part.size());
       // The side whose F this part sees: its own, or for a part lying on the cut, the tet's.
       int side = 0;
-      if (em.cut) {
-        const CutSurface::Closest near = em.cut->closest(centre);
-        side = near.distance <= face_tolerance ? (em.cut->unit_normal(near.triangle).dot(-outward) > 0 ? 1 : -1)
-                                          : em.cut->side(centre);
+      if (cut) {
+        const CutSurface::Closest near = cut->closest(centre);
+        side = near.distance <= face_tolerance ? (cut->unit_normal(near.triangle).dot(-outward) > 0 ? 1 : -1)
+                                          : cut->side(centre);
       }
       polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
       for (std::size_t i = 0; i < x.size(); ++i) {
         const Eigen::Vector2d bc = JtJ.ldlt().solve(J.transpose() * (x[i] - A));
         const std::array<double, 3> lambda = {1.0 - bc[0] - bc[1], bc[0], bc[1]};
-        const BranchValues F = branch_functions(em.front.coordinates(x[i]), side);
+        const BranchValues F = branch_functions(front.coordinates(x[i]), side);
         for (const Entry& e : entries) {
           if (e.local == k) continue;
           const double N = lambda[std::find(f.begin(), f.end(), e.local) - f.begin()];
@@ -277,9 +281,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     }
   }
   // 2. The cut inside the tet: the jump of F across it (a cut lying on a face was taken there).
-  if (em.cut) {
+  if (cut) {
     const TetShape shape = tet_shape(em.mesh, t);
-    const TriangleMesh& cm = em.cut->mesh();
+    const TriangleMesh& cm = cut->mesh();
     for (const int tri : meeting) {
       const Polygon poly = clip_triangle(corner, cm.points.row(cm.triangles(tri, 0)).transpose(),
                                          cm.points.row(cm.triangles(tri, 1)).transpose(),
@@ -295,10 +299,10 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
         on_face = on_face || std::abs(nf.dot(centre - a)) <= tolerance;
       }
       if (on_face) continue;
-      const Eigen::Vector3d cut_normal = em.cut->unit_normal(tri);
+      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
       polygon_rule(poly, fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
       for (std::size_t i = 0; i < x.size(); ++i) {
-        const TipCoordinates tc = em.front.coordinates(x[i]);
+        const TipCoordinates tc = front.coordinates(x[i]);
         const BranchValues below = branch_functions(tc, -1), above = branch_functions(tc, 1);
         const Eigen::Vector4d N = shape.values(x[i]);
         for (const Entry& e : entries)

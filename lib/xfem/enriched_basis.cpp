@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enriched_basis.h"
+#include "xfem/several_cuts.h"
 
 #include <string>
 
@@ -11,6 +12,10 @@ namespace xfem {
 
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     BasisAt& out) {
+  if (!em.cuts.empty()) {  // several cuts: side is a side code (several_cuts.h)
+    several_cuts_basis(em, t, shape, x, side, out);
+    return;
+  }
   const long begin = em.offsets[t];
   const int n = em.size(t);
   out.N.resize(n);

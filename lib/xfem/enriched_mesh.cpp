@@ -74,9 +74,16 @@ EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_p
         fail("field array 'extended_local': tet " + std::to_string(t) + " has local id " + std::to_string(em.local[i]));
     }
   }
-  if (em.nb > 0 && em.front.empty())
+  if (em.nb > 0 && em.front.empty() && !m.field_data.count("cut_count"))  // several cuts: checked per cut
     fail(std::to_string(em.nb) + " branch-enriched points but the fields 'front_segments' are empty");
-  if (!cut_path.empty()) em.cut = std::make_shared<const CutSurface>(read_triangle_mesh(cut_path, warnings));
+  if (!cut_path.empty()) {
+    // A mesh classified with several cuts is read by read_enriched_mesh_cuts (several_cuts.h) only.
+    const auto count = m.field_data.find("cut_count");
+    if (count != m.field_data.end() && !count->second.values.empty() && count->second.values[0] > 1)
+      fail("classified with " + std::to_string(static_cast<long>(count->second.values[0])) +
+           " cuts, but 1 is given (this tool takes one cut)");
+    em.cut = std::make_shared<const CutSurface>(read_triangle_mesh(cut_path, warnings));
+  }
   return em;
 }
 

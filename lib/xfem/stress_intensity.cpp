@@ -77,9 +77,12 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen
     conforming_rule(em, splits, t, options.order, tp.rule);
     for (int k = 0; k < tp.rule.size(); ++k) {
       int side = tp.rule.side[k];
-      if (side == 0 && em.cut) side = em.cut->side(tp.rule.x[k]);
+      if (side == 0 && em.cut && em.cuts.empty()) side = em.cut->side(tp.rule.x[k]);  // several cuts: 0 = decide by all
       tp.rule.side[k] = side;
       tp.grad_u.push_back(displacement_gradient_at(em, t, tp.rule.x[k], side, u));
+      // Several cuts: that side is a side code (several_cuts.h); the auxiliary fields want the
+      // point's side of em.cut, the cut whose front is evaluated.
+      if (!em.cuts.empty()) tp.rule.side[k] = em.cut ? em.cut->side(tp.rule.x[k]) : 0;
       tp.sigma.push_back(stress(tp.grad_u.back(), lm));
     }
     return cache.emplace(t, std::move(tp)).first->second;
