@@ -10,7 +10,7 @@
 #     T-junction): without a Dirichlet condition on the wedge xfem-solve names the freed piece; with
 #     the wedge fixed and the ends pulled the wedge does not move (1e-10) and has zero strain;
 #   - two discs ending inside a box (both fronts branch enriched): uniaxial tension parallel to them
-#     reproduced exactly (1e-10), xfem-front on each front (--front-of 0 / 1);
+#     reproduced exactly (1e-10; strain 1e-9), xfem-front on each front (--front-of 0 / 1);
 #   - one cut_id file is the same as two --cut files (same solution bytes);
 #   - every configuration refused: its one-line error.
 set -u
