@@ -10,8 +10,6 @@ namespace xfem {
 
 namespace {
 
-const std::size_t kAny = static_cast<std::size_t>(-1);
-
 std::vector<long> to_long(const DataArray& a) { return std::vector<long>(a.values.begin(), a.values.end()); }
 
 }  // namespace
