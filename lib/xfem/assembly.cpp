@@ -9,6 +9,7 @@
 
 #include "xfem/branch_functions.h"
 #include "xfem/conforming_quadrature.h"
+#include "xfem/consistent_gradients.h"
 #include "xfem/several_cuts.h"
 #include "xfem/error.h"
 #include "xfem/pieces.h"
@@ -229,10 +230,11 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   // every enriched tet on its own points; otherwise the oversampling `rule`.
   const CutElementSplits splits = conforming_order > 0 ? split_cut_elements(em) : CutElementSplits();
   PointRule points;
+  FaceIntegralCache faces;  // each face's integrals computed once for its two tets
   for (std::size_t i = 0; i < enriched.size(); ++i) {
     if (conforming_order > 0) {
       conforming_rule(em, splits, enriched[i], conforming_order, points);
-      element_stiffness_at_points(em, enriched[i], points, material, k, conforming_order);
+      element_stiffness_at_points(em, enriched[i], points, material, k, conforming_order, &faces);
     } else {
       element_stiffness(em, enriched[i], rule, material, k);
     }

@@ -271,7 +271,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 }
 
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
-                                 Eigen::MatrixXd& k, int consistent_order) {
+                                 Eigen::MatrixXd& k, int consistent_order, FaceIntegralCache* face_cache) {
   // As element_stiffness: S = G^T G, row q of G the basis gradients at point q times sqrt(weight).
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
@@ -288,7 +288,7 @@ void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule&
   for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_order);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_order, face_cache);
     const double volume = w.sum();
     for (int c = 0; c < n; ++c) {
       if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;

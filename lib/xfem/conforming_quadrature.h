@@ -11,6 +11,8 @@
 
 namespace xfem {
 
+class FaceIntegralCache;  // consistent_gradients.h
+
 /// A cut-conforming, front-singular integration rule for tets with enriched DOFs: the alternative
 /// to the paper's oversampling (3.6) selected by problem.json `integration.rule = "conforming"`
 /// (docs/FORMATS.md). Oversampling integrates the Heaviside jump only to O(sub-tet size), gives no
@@ -97,7 +99,9 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 /// gradients are first shifted per element so that the rule integrates them exactly as the
 /// divergence theorem does (branch_gradient_integrals, consistent_gradients.h, with that many
 /// Gauss points per direction on the faces): the linear patch test then holds to round-off.
+/// `face_cache` (optional): face integrals shared between neighbouring tets (consistent_gradients.h);
+/// pass the same one for all the tets of an assembly.
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
-                                 Eigen::MatrixXd& k, int consistent_order = 0);
+                                 Eigen::MatrixXd& k, int consistent_order = 0, FaceIntegralCache* face_cache = nullptr);
 
 }  // namespace xfem

@@ -141,9 +141,112 @@ Eigen::Vector3d fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, con
   return poly[0];
 }
 
+// The integrals over face (A, B, C) (its points in increasing id order, `normal` its unit normal)
+// of N_v F_j for v = A, B, C and the four branch functions, for a tet whose outward normal is
+// +normal [0] and -normal [1]. Everything here depends on the face alone, so that the two tets
+// sharing it get the same numbers (FaceIntegralCache): the face is split along the cut's trace (by
+// every cut triangle crossing a part's inside, `meeting` holding at least those) and along a front
+// lying in its plane, then fanned from the singular point of each part.
+std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut, const CrackFront& front,
+                                                          const std::vector<const FrontSegment*>& fronts,
+                                                          const std::vector<int>& meeting, const Eigen::Vector3d& A,
+                                                          const Eigen::Vector3d& B, const Eigen::Vector3d& C,
+                                                          const Eigen::Vector3d& normal, int depth,
+                                                          const std::vector<double>& nodes,
+                                                          const std::vector<double>& weights) {
+  // Tolerances of the face's own size: both tets decide alike.
+  const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+  const double face_tolerance = 1e-12 * face_h;
+  std::vector<Polygon> parts{{A, B, C}}, next;
+  Polygon above, below;
+  if (cut) {
+    for (const int tri : meeting) {
+      Eigen::Vector3d p, q;
+      if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
+      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
+      const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
+      next.clear();
+      for (const Polygon& part : parts) {
+        split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
+        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
+          next.push_back(above);
+          next.push_back(below);
+        } else {
+          next.push_back(part);
+        }
+      }
+      parts.swap(next);
+    }
+  }
+  // The front segments near the face: its own bounding box, so that both tets see the same.
+  std::vector<const FrontSegment*> face_fronts;
+  const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
+  for (const FrontSegment* segment : fronts)
+    if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
+        (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
+      face_fronts.push_back(segment);
+  // A front lying in the face's plane splits it too: the cut covers the face on one side of the
+  // front only (there each tet sees its own side's F), and F ~ sqrt(r) is smooth on either side.
+  for (const FrontSegment* segment : face_fronts) {
+    if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
+    const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
+    next.clear();
+    for (const Polygon& part : parts) {
+      split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
+      if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
+        next.push_back(above);
+        next.push_back(below);
+      } else {
+        next.push_back(part);
+      }
+    }
+    parts.swap(next);
+  }
+  // Barycentric coordinates on the face, for N_v.
+  Eigen::Matrix<double, 3, 2> J;
+  J << B - A, C - A;
+  const Eigen::Matrix2d JtJ = J.transpose() * J;
+  std::array<Eigen::Matrix<double, 3, 4>, 2> integral;
+  integral[0].setZero();
+  integral[1].setZero();
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> w;
+  for (const Polygon& part : parts) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& v : part) centre += v;
+    centre /= static_cast<double>(part.size());
+    // The side whose F the part shows each tet: its own, or for a part lying on the cut, the side
+    // the tet is on (the one its outward normal points away from).
+    std::array<int, 2> side = {0, 0};
+    if (cut) {
+      const CutSurface::Closest near = cut->closest(centre);
+      if (near.distance <= face_tolerance) {
+        const double along = cut->unit_normal(near.triangle).dot(normal);
+        side = {-along > 0 ? 1 : -1, along > 0 ? 1 : -1};
+      } else {
+        side[0] = side[1] = cut->side(centre);
+      }
+    }
+    polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const Eigen::Vector2d bc = JtJ.ldlt().solve(J.transpose() * (x[i] - A));
+      const Eigen::Vector3d N(1.0 - bc[0] - bc[1], bc[0], bc[1]);
+      const TipCoordinates tc = front.coordinates(x[i]);
+      const BranchValues F0 = branch_functions(tc, side[0]);
+      const BranchValues F1 = side[1] == side[0] ? F0 : branch_functions(tc, side[1]);
+      for (int j = 0; j < 4; ++j) {
+        integral[0].col(j) += (w[i] * F0.F[j]) * N;
+        integral[1].col(j) += (w[i] * F1.F[j]) * N;
+      }
+    }
+  }
+  return integral;
+}
+
 }  // namespace
 
-Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order) {
+Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
+                                                                   FaceIntegralCache* cache) {
   const int n = em.size(t);
   const long begin = em.offsets[t];
   Eigen::Matrix<double, Eigen::Dynamic, 3> out = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
@@ -200,85 +303,31 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     for (const Entry& e : entries) needed = needed || e.local != k;
     if (!needed) continue;
     const Eigen::Vector3d &A = corner[f[0]], &B = corner[f[1]], &C = corner[f[2]];
-    // Tolerances of the face's own size: both tets decide alike.
-    const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
-    const double face_tolerance = 1e-12 * face_h;
     Eigen::Vector3d normal = (B - A).cross(C - A);
     const double area2 = normal.norm();
     if (area2 == 0.0) continue;
     normal /= area2;
-    Eigen::Vector3d outward = normal.dot(A - corner[k]) > 0 ? normal : Eigen::Vector3d(-normal);
-    // The face split along the cut's trace: by every cut triangle crossing a part's inside.
-    std::vector<Polygon> parts{{A, B, C}}, next;
-    Polygon above, below;
-    for (const int tri : meeting) {
-      Eigen::Vector3d p, q;
-      if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
-      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
-      const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
-      next.clear();
-      for (const Polygon& part : parts) {
-        split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
-        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
-          next.push_back(above);
-          next.push_back(below);
-        } else {
-          next.push_back(part);
-        }
-      }
-      parts.swap(next);
+    const bool reversed = normal.dot(A - corner[k]) <= 0;  // outward = -normal
+    const Eigen::Vector3d outward = reversed ? Eigen::Vector3d(-normal) : normal;
+    const FaceIntegralCache::Key key{{id[f[0]], id[f[1]], id[f[2]]}, &front};
+    FaceIntegralCache::Value computed;
+    FaceIntegralCache::Value* face = nullptr;
+    if (cache) {
+      const auto found = cache->faces.find(key);
+      if (found != cache->faces.end()) face = &found->second;
     }
-    // The front segments near the face: its own bounding box, so that both tets see the same.
-    std::vector<const FrontSegment*> face_fronts;
-    const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
-    for (const FrontSegment* segment : fronts)
-      if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
-          (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
-        face_fronts.push_back(segment);
-    // A front lying in the face's plane splits it too: the cut covers the face on one side of the
-    // front only (there each tet sees its own side's F), and F ~ sqrt(r) is smooth on either side.
-    for (const FrontSegment* segment : face_fronts) {
-      if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
-      const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
-      next.clear();
-      for (const Polygon& part : parts) {
-        split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
-        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
-          next.push_back(above);
-          next.push_back(below);
-        } else {
-          next.push_back(part);
-        }
-      }
-      parts.swap(next);
+    if (!face) {
+      computed.integral = face_integrals(cut, front, fronts, meeting, A, B, C, normal, depth, nodes, weights);
+      face = &computed;
+      if (cache) face = &(cache->faces[key] = computed);
     }
-    // Barycentric coordinates on the face, for N_l (exactly the same from both tets).
-    Eigen::Matrix<double, 3, 2> J;
-    J << B - A, C - A;
-    const Eigen::Matrix2d JtJ = J.transpose() * J;
-    for (const Polygon& part : parts) {
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      for (const auto& v : part) centre += v;
-      centre /= static_cast<double>(part.size());
-      // The side whose F this part sees: its own, or for a part lying on the cut, the tet's.
-      int side = 0;
-      if (cut) {
-        const CutSurface::Closest near = cut->closest(centre);
-        side = near.distance <= face_tolerance ? (cut->unit_normal(near.triangle).dot(-outward) > 0 ? 1 : -1)
-                                          : cut->side(centre);
-      }
-      polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        const Eigen::Vector2d bc = JtJ.ldlt().solve(J.transpose() * (x[i] - A));
-        const std::array<double, 3> lambda = {1.0 - bc[0] - bc[1], bc[0], bc[1]};
-        const BranchValues F = branch_functions(front.coordinates(x[i]), side);
-        for (const Entry& e : entries) {
-          if (e.local == k) continue;
-          const double N = lambda[std::find(f.begin(), f.end(), e.local) - f.begin()];
-          out.row(e.row) += (w[i] * N * F.F[e.function]) * outward.transpose();
-        }
-      }
+    const Eigen::Matrix<double, 3, 4>& integral = face->integral[reversed ? 1 : 0];
+    for (const Entry& e : entries) {
+      if (e.local == k) continue;
+      const long v = std::find(f.begin(), f.end(), e.local) - f.begin();
+      out.row(e.row) += integral(v, e.function) * outward.transpose();
     }
+    if (cache && ++face->uses == 2) cache->faces.erase(key);  // both tets of the face served
   }
   // 2. The cut inside the tet: the jump of F across it (a cut lying on a face was taken there).
   if (cut) {

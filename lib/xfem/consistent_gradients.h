@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+
 #include <Eigen/Dense>
+#include <array>
+#include <unordered_map>
 
 #include "xfem/enriched_mesh.h"
 
@@ -23,8 +26,38 @@ namespace xfem {
 /// stress with no traction on the cut. The integrands are bounded (F ~ sqrt(r)), so these
 /// integrals are also more accurate than the volume rule's.
 ///
+/// The integrals of N_v F_j over faces, kept between the two tets that share a face: the second
+/// takes the first's numbers (with its outward normal reversed) instead of computing them again,
+/// which halves the cost of the faces and makes the two contributions cancel bit for bit. Keyed by
+/// the face's point ids and the front; an entry is dropped once both tets have used it.
+class FaceIntegralCache {
+ public:
+  struct Key {
+    std::array<long, 3> points;  ///< increasing
+    const void* front;
+    bool operator==(const Key& o) const { return points == o.points && front == o.front; }
+  };
+  struct Value {
+    /// integral over the face of N_v F_j (row v: the face's v-th point in increasing id order,
+    /// column j: the function), for the tet whose outward normal is +normal [0] or -normal [1]
+    /// (they differ on a face lying on the cut, where each tet sees its own side's F)
+    std::array<Eigen::Matrix<double, 3, 4>, 2> integral;
+    int uses = 0;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = std::hash<const void*>()(k.front);
+      for (long p : k.points) h = h * 1000003u ^ std::hash<long>()(p);
+      return h;
+    }
+  };
+  std::unordered_map<Key, Value, Hash> faces;
+};
+
 /// Returns |C| x 3 (rows in the order of the tet's C); rows of DOFs other than branch DOFs are 0.
 /// `order`: Gauss points per direction on each face triangle (order^2 points per triangle).
-Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order);
+/// `cache` (optional): face integrals shared with the tet's neighbours (FaceIntegralCache).
+Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
+                                                                   FaceIntegralCache* cache = nullptr);
 
 }  // namespace xfem
