@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
       "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
-  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "incremental";
+  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "incremental",
+              backend = "cholmod";
   int steps = 0, width = 1200, height = 900;
   double scale = 1.0;
   bool solutions = false, cuts = false, png = false;
@@ -79,9 +80,17 @@ int main(int argc, char** argv) {
                  "factorized anew) or auto (schur while the enriched DOFs times one solve take less than the "
                  "factorization did, else refactor)")
       ->check(CLI::IsMember({"incremental", "auto", "schur", "refactor"}));
+  app.add_option("--backend", backend,
+                 "linear solver of the uncut body: cholmod (the only one: the sweep reuses one Cholesky factorization "
+                 "for every step; petsc is refused, see docs/PERFORMANCE.md)")
+      ->check(CLI::IsMember({"cholmod", "petsc"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
+    if (backend == "petsc")
+      throw xfem::Error("--backend petsc: not available in xfem-sweep: a step reuses the uncut body's one Cholesky "
+                        "factorization for thousands of solves, which an iterative solver would pay for in full each "
+                        "time; for a body too large for CHOLMOD run the tools per step with xfem-solve --backend petsc");
     if (steps < 1) throw xfem::Error("--steps " + std::to_string(steps) + ": the number of steps must be at least 1");
     if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
       throw xfem::Error(dir + ": exists and is not a directory");

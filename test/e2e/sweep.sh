@@ -40,6 +40,8 @@ P=$S/problem.json
 expect_error "plain.vtp: no cell array 'time'" "$S/box.vtu" --cut "$S/plain.vtp" --problem "$P" --steps 2
 expect_error "--steps 0: the number of steps must be at least 1" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 0
 expect_error "--steps -3" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps -3
+expect_error "--backend petsc: not available in xfem-sweep" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 \
+  --backend petsc
 expect_error "missing.vtu" "$S/missing.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2
 sed 's/"value": \[0, 0, 0\]/"exact": {"rigid": {"above": {"translation": [0, 0, 0]}}}/' "$P" >"$S/exact.json"
 expect_error "prescribes an exact field" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/exact.json" --steps 2
