@@ -246,7 +246,8 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 namespace {
 
 // Everything an enriched tet's element matrix is computed from, besides the fixed geometry and
-// problem: its cut class, its nodes' sides, its extended connectivity's layout (per entry the local
+// problem: its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which
+// enters cut tets only), its extended connectivity's layout (per entry the local
 // node and which function: original, sign, branch 1-4), the ids of the sweep's triangles whose box
 // meets the tet's box grown by its longest edge h (the cut pieces and point sides come from those),
 // and the front segments near it (sorted): those within (distance to the nearest) + 3 h of its
@@ -261,7 +262,7 @@ std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector
   double h = 0;
   for (int c = 0; c < 4; ++c) {
     const int p = em.mesh.tets(t, c);
-    key.push_back(em.side[p]);
+    key.push_back(em.cut_class[t] > 0 ? em.side[p] : 0);  // sides enter sign DOFs, of cut tets only
     const Eigen::Vector3d x = em.mesh.points.row(p).transpose();
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
@@ -369,6 +370,8 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   }
   out.enriched_tets = static_cast<long>(tets.size());
   out.recomputed_tets = static_cast<long>(stale.size());
+  out.keys_seconds = seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
   if (!stale.empty()) {
     const EnrichedMesh sub = sub_mesh(em, stale);
     const Lame material = lame(problem.E, problem.nu);
@@ -387,6 +390,7 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
     }
   }
 
+  out.elements_seconds = seconds_since(t1);
   // The enriched DOFs' columns of K, summed tet by tet in increasing order (so a column whose tets
   // did not change is bitwise the same): per enriched DOF its point and function give its key.
   const long np = em.np, ne = em.n - np, nf = static_cast<long>(body_.free_dofs.size());

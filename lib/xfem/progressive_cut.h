@@ -68,6 +68,8 @@ struct CutSolution {
   bool schur_used = false;         ///< which solver ran (Auto decides per cut)
   SchurStats schur;
   long recomputed_tets = 0;        ///< ProgressiveCut: tets whose element matrices were computed (the others reused)
+  double keys_seconds = 0;         ///< ProgressiveCut, part of assemble_seconds: which element matrices to compute
+  double elements_seconds = 0;     ///< ProgressiveCut, part of assemble_seconds: computing them
   IncrementalSchurStats incremental;  ///< ProgressiveCut: what the Schur complement's update did
 };
 
