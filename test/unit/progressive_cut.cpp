@@ -165,33 +165,39 @@ TEST_CASE("progressive cut: every step of a sweep equals the whole system's solu
   path.polyline = {{0.43, -0.05, 0.6}, {0.43, 0.95, 0.6}};
   const xfem::TriangleMesh sweep = xfem::cut_sweep(path, 0.3, {0, 0, -1}, 0, 0.06, 1.0);
   const std::vector<double> times = xfem::cut_times(sweep, "sweep");
-  const xfem::Problem p = xfem::parse_problem(xfem::Json::parse(R"({
+  const std::string conditions = R"(
     "material": {"E": 1e3, "nu": 0.3},
     "dirichlet": [{"name": "bottom", "selector": {"box": {"lo": [-1, -1, -1], "hi": [2, 2, 0]}}, "value": [0, 0, 0]}],
     "neumann": [{"name": "left", "selector": {"box": {"lo": [-1, -1, -1], "hi": [0, 2, 3]}}, "traction": [-10, 0, 0]},
-                {"name": "right", "selector": {"box": {"lo": [1, -1, -1], "hi": [2, 2, 3]}}, "traction": [10, 0, 3]}]
-  })"), "p.json");
-  const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
+                {"name": "right", "selector": {"box": {"lo": [1, -1, -1], "hi": [2, 2, 3]}}, "traction": [10, 0, 3]}])";
   const std::vector<double> t = xfem::step_times(times, 6);
-  xfem::ProgressiveCut sweeping(body);
-  long reused_tets = 0, kept_dofs = 0;
-  // Steps in order, then backwards and out of order: the answer must not depend on the history.
-  for (int k : {0, 1, 2, 3, 4, 5, 2, 5, 0, 4}) {
-    INFO("step " << k + 1);
-    const auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k]));
-    const xfem::CutSolution step = sweeping.step(cut, xfem::cut_until_ids(times, t[k]));
-    const xfem::CutSolution whole = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Refactor);
-    REQUIRE(step.u.size() == whole.u.size());
-    CHECK(step.enriched_dofs == whole.enriched_dofs);
-    CHECK(step.unsupported_dofs == whole.unsupported_dofs);
-    CHECK((step.u - whole.u).norm() <= 1e-10 * whole.u.norm());
-    CHECK(step.enriched_dofs > 0);
-    reused_tets += step.enriched_tets - step.recomputed_tets;
-    kept_dofs += step.incremental.kept;
+  // The default (conforming) rule with steps in order, then backwards and out of order (the answer
+  // must not depend on the history); the oversampling rule (its points' sides from the cut) in order.
+  for (const auto& [integration, order] :
+       {std::pair<std::string, std::vector<int>>{"", {0, 1, 2, 3, 4, 5, 2, 5, 0, 4}},
+        std::pair<std::string, std::vector<int>>{R"(, "integration": {"rule": "oversampling"})", {1, 2, 3, 4}}}) {
+    INFO("integration '" << integration << "'");
+    const xfem::Problem p = xfem::parse_problem(xfem::Json::parse("{" + conditions + integration + "}"), "p.json");
+    const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
+    xfem::ProgressiveCut sweeping(body);
+    long reused_tets = 0, kept_dofs = 0;
+    for (int k : order) {
+      INFO("step " << k + 1);
+      const auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k]));
+      const xfem::CutSolution step = sweeping.step(cut, xfem::cut_until_ids(times, t[k]));
+      const xfem::CutSolution whole = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Refactor);
+      REQUIRE(step.u.size() == whole.u.size());
+      CHECK(step.enriched_dofs == whole.enriched_dofs);
+      CHECK(step.unsupported_dofs == whole.unsupported_dofs);
+      CHECK((step.u - whole.u).norm() <= 1e-10 * whole.u.norm());
+      CHECK(step.enriched_dofs > 0);
+      reused_tets += step.enriched_tets - step.recomputed_tets;
+      kept_dofs += step.incremental.kept;
+    }
+    // The point of it: element matrices and Schur columns were reused.
+    CHECK(reused_tets > 0);
+    CHECK(kept_dofs > 0);
   }
-  // The point of it: element matrices and Schur columns were reused.
-  CHECK(reused_tets > 0);
-  CHECK(kept_dofs > 0);
 }
 
 TEST_CASE("incremental Schur: kept, changed, new and removed columns give the Schur complement of the current ones",
