@@ -246,16 +246,22 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 namespace {
 
 // Everything an enriched tet's element matrix is computed from, besides the fixed geometry and
-// problem: its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which
-// enters cut tets only), its extended connectivity's layout (per entry the local
-// node and which function: original, sign, branch 1-4), the ids of the sweep's triangles whose box
-// meets the tet's box grown by its longest edge h (the cut pieces and point sides come from those),
-// and the front segments near it (sorted): those within (distance to the nearest) + 3 h of its
-// centroid when it has branch DOFs (the crack-tip coordinates come from the nearest front points and
-// the frame interpolated between neighbouring segments), those within 3 h when it has none (the
-// conforming rule subdivides near the front, within its longest edge). Equal keys, equal matrices.
+// problem (equal keys, equal matrices):
+//  - its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which enters
+//    cut tets only) and its extended connectivity's layout (per entry the local node and which
+//    function: original, sign, branch 1-4);
+//  - the ids of the sweep's triangles whose box meets the tet's box: they make its cut pieces (the
+//    conforming rule's pieces and their sides). Where points are given their side by the closest
+//    cut point instead, the box is grown by as far as that point can be: the tet's longest edge h
+//    for a cut tet under the oversampling rule, 2 h with branch DOFs (a blending tet's points lie
+//    within 2 h of the front, so of the cut);
+//  - the front segments near it (sorted), where the front matters: with branch DOFs those within
+//    (distance to the nearest) + 3 h of its centroid (the crack-tip coordinates come from the
+//    nearest front points and the frame interpolated between neighbouring segments of length
+//    <= h); a partially cut tet without branch DOFs is split at the front: those within 2 h. A
+//    completely cut tet without branch DOFs never looks at the front (one point per cut piece).
 std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector<int>& ids,
-                                const std::vector<Eigen::Matrix<double, 3, 2>>& boxes) {
+                                const std::vector<Eigen::Matrix<double, 3, 2>>& boxes, bool conforming) {
   std::vector<double> key;
   key.push_back(em.cut_class[t]);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo, centre = Eigen::Vector3d::Zero();
@@ -277,15 +283,16 @@ std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector
     branch = branch || function >= 2;
     key.push_back(8 * function + em.local[e]);
   }
-  lo.array() -= h;
-  hi.array() += h;
+  const double grow = branch ? 2 * h : !conforming ? h : 0.0;
+  lo.array() -= grow;
+  hi.array() += grow;
   key.push_back(-1);
   for (std::size_t k = 0; k < boxes.size(); ++k)
     if ((boxes[k].col(0).array() <= hi.array()).all() && (boxes[k].col(1).array() >= lo.array()).all())
       key.push_back(ids[k]);
   key.push_back(-1);
   const auto& segments = em.front.segments();
-  if (segments.empty()) return key;
+  if (segments.empty() || (!branch && em.cut_class[t] != 1)) return key;
   std::vector<double> distance(segments.size());
   double nearest = 1e300;
   for (std::size_t k = 0; k < segments.size(); ++k) {
@@ -361,7 +368,7 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   for (int t = 0; t < em.tets(); ++t) {
     if (em.size(t) <= 4) continue;
     tets.push_back(t);
-    std::vector<double> key = element_key(em, t, ids, boxes);
+    std::vector<double> key = element_key(em, t, ids, boxes, problem.rule == Problem::Rule::Conforming);
     const auto it = elements_.find(t);
     if (it == elements_.end() || it->second.key != key) {
       stale.push_back(t);
