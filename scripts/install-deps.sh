@@ -6,6 +6,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev  # exact geometry, AABB trees, Mesh_3
   libeigen3-dev                                    # dense and sparse linear algebra
   libsuitesparse-dev libmetis-dev                  # CHOLMOD with METIS ordering
+  liblapack-dev libblas-dev                        # dense Cholesky updates of progressive cutting (xfem-sweep)
   libopenblas0-pthread                             # fast BLAS for CHOLMOD (the reference BLAS is ~30x slower)
   libvtk9-dev                                      # mesh I/O, point location, rendering
   libpetsc-real-dev openmpi-bin                    # iterative, MPI-capable solve

@@ -42,14 +42,15 @@ int main(int argc, char** argv) {
       "Progressive cutting: the cut of a blade's sweep (a cut surface whose triangles carry the cell array 'time',\n"
       "e.g. from xfem-mesh cut-sweep) solved at K times t_k = t0 + k (t1 - t0) / K, k = 1..K, the cut at t_k being\n"
       "the triangles with time <= t_k. The uncut body is assembled and factorized once (CHOLMOD); each step\n"
-      "classifies and enriches the body, assembles only the tets with enriched DOFs and solves for the enriched DOFs\n"
-      "by block elimination (a Schur complement formed with the one factorization) while the cut is small, else by a\n"
-      "new factorization of the uncut K_ss with the enriched rows appended (--solver): the same solution as\n"
-      "xfem-classify, -enrich, -assemble and -solve on that cut (docs/PERFORMANCE.md: the cost). Writes per step\n"
+      "classifies and enriches the body, integrates only the tets whose enrichment or nearby cut changed since the\n"
+      "previous step and solves for the enriched DOFs by block elimination, the Schur complement kept from step to\n"
+      "step (the uncut body's response on the DOFs the sweep touches computed once; --solver for the other ways):\n"
+      "the same solution as xfem-classify, -enrich, -assemble and -solve on that cut (docs/PERFORMANCE.md: the cost). Writes per step\n"
       "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
-  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "auto";
+  std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "incremental",
+              backend = "cholmod";
   int steps = 0, width = 1200, height = 900;
   double scale = 1.0;
   bool solutions = false, cuts = false, png = false;
@@ -61,7 +62,8 @@ int main(int argc, char** argv) {
   app.add_option("--steps", steps, "number of steps K (>= 1)")->required();
   app.add_option("-o,--output", dir, "directory of the frames (created; files of the same names are replaced)")->required();
   app.add_option("--report", report_path, "JSON report: the factorization once, per step the time, counts and DOFs");
-  app.add_flag("--solutions", solutions, "also write each step's solution DIR/u_NNN.mtx (3N values, m, as xfem-solve's u.mtx)");
+  app.add_flag("--solutions", solutions, "also write each step's solution DIR/u_NNN.mtx (3N values, m, as xfem-solve's u.mtx, "
+                                         "with the fingerprints of the body, the step's cut and the problem)");
   app.add_flag("--cuts", cuts, "also write each step's cut DIR/cut_NNN.vtp (the triangles with time <= t_k)");
   app.add_flag("--png", png, "also render each step as DIR/step_NNN.png with one camera and one colour range for the "
                              "whole sweep (those of the last step; needs an X display: run under xvfb-run -a)");
@@ -70,15 +72,25 @@ int main(int argc, char** argv) {
   app.add_option("--width", width, "picture width, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--height", height, "picture height, pixels")->check(xfem::cli::range(64, 8192));
   app.add_option("--solver", solver,
-                 "how each step is solved: schur (block elimination on the enriched DOFs with the uncut body's one "
-                 "factorization: a dense Schur complement, cheap for small cuts), refactor (the uncut K_ss, reused, with "
-                 "the enriched rows and columns, factorized anew: cheaper from a few hundred enriched DOFs on) or auto "
-                 "(default: schur while the enriched DOFs times one solve with the factor take less than the factorization "
-                 "did); the same solution either way")
-      ->check(CLI::IsMember({"auto", "schur", "refactor"}));
+                 "how each step is solved (the same solution every way): incremental (default: block elimination "
+                 "on the enriched DOFs, the Schur complement kept from step to step, only what the cut's growth "
+                 "changed computed anew, after a one-time computation of the uncut body's response on the DOFs the "
+                 "whole sweep touches), schur (the Schur complement formed anew each step: a solve with the factor "
+                 "per enriched DOF), refactor (the uncut K_ss, reused, with the enriched rows and columns, "
+                 "factorized anew) or auto (schur while the enriched DOFs times one solve take less than the "
+                 "factorization did, else refactor)")
+      ->check(CLI::IsMember({"incremental", "auto", "schur", "refactor"}));
+  app.add_option("--backend", backend,
+                 "linear solver of the uncut body: cholmod (the only one: the sweep reuses one Cholesky factorization "
+                 "for every step; petsc is refused, see docs/PERFORMANCE.md)")
+      ->check(CLI::IsMember({"cholmod", "petsc"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
+    if (backend == "petsc")
+      throw xfem::Error("--backend petsc: not available in xfem-sweep: a step reuses the uncut body's one Cholesky "
+                        "factorization for thousands of solves, which an iterative solver would pay for in full each "
+                        "time; for a body too large for CHOLMOD run the tools per step with xfem-solve --backend petsc");
     if (steps < 1) throw xfem::Error("--steps " + std::to_string(steps) + ": the number of steps must be at least 1");
     if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
       throw xfem::Error(dir + ": exists and is not a directory");
@@ -107,9 +119,11 @@ int main(int argc, char** argv) {
     report["body"] = body_path;
     report["cut"] = cut_path;
     report["problem"] = problem_path;
-    report["fingerprints"] = xfem::provenance_json({{"body", xfem::fingerprint(mesh)},
+    const xfem::Fingerprint body_fingerprint = xfem::fingerprint(mesh),
+                            problem_fingerprint = xfem::fingerprint_json_file(problem_path);
+    report["fingerprints"] = xfem::provenance_json({{"body", body_fingerprint},
                                                     {"cut", xfem::fingerprint(sweep)},
-                                                    {"problem", xfem::fingerprint_json_file(problem_path)}});
+                                                    {"problem", problem_fingerprint}});
     report["factorization"] = {{"free_dofs", static_cast<long>(body.free_dofs.size())},
                                {"ordering", body.factor->ordering},
                                {"factor_nonzeros", static_cast<long>(body.factor->factor_nonzeros)},
@@ -118,11 +132,27 @@ int main(int argc, char** argv) {
                                {"factor_seconds", body.factor->factor_seconds},
                                {"solve_seconds", body.solve_seconds},
                                {"seconds", setup}};
+    // Incremental: the body's response on the DOFs the whole sweep touches, once.
+    std::unique_ptr<xfem::ProgressiveCut> progressive;
+    double region_seconds = 0;
+    if (solver == "incremental") {
+      start = xfem::cli::now();
+      progressive = std::make_unique<xfem::ProgressiveCut>(body);
+      std::vector<std::shared_ptr<const xfem::CutSurface>> cuts;
+      for (double tk : t) cuts.push_back(std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, tk)));
+      progressive->prepare(cuts, xfem::cli::progress("the body's response on the sweep's region"));
+      region_seconds = xfem::cli::now() - start;
+      xfem::cli::info("the uncut body's response on the " + std::to_string(progressive->region_size()) +
+                      " free DOFs the sweep touches: " + g(region_seconds) + " s (once)");
+    }
+    report["factorization"]["region_dofs"] = progressive ? progressive->region_size() : 0L;
+    report["factorization"]["region_seconds"] = region_seconds;
     report["steps"] = xfem::Json::array();
     std::vector<xfem::CollectionEntry> collection;
     const auto solve_step = [&](int k) {
       auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
       try {
+        if (progressive) return progressive->step(cut, xfem::cut_until_ids(times, t[k - 1]));
         return xfem::solve_cut(body, cut, {},
                                solver == "schur"      ? xfem::CutSolver::Schur
                                : solver == "refactor" ? xfem::CutSolver::Refactor
@@ -149,6 +179,9 @@ int main(int argc, char** argv) {
       last = std::make_unique<xfem::CutSolution>(solve_step(steps));
       last_solved = xfem::cli::now() - start;
       const xfem::DeformedBody frame = make_frame(*last);
+      // The incremental solver's step K follows step K - 1 like every other step: solve it again there.
+      if (progressive) last.reset();
+      report["factorization"]["picture_setup_seconds"] = xfem::cli::now() - start;
       picture.view = xfem::cut_view(frame.wound);
       picture.colour_max = xfem::colour_top(frame.volume);
       const auto& u = frame.volume.point_data.at("displacement");
@@ -176,8 +209,15 @@ int main(int argc, char** argv) {
       const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
       xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string());
       xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string());
-      if (solutions) xfem::write_vector(step.u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string());
+      const double framed = xfem::cli::now() - write_start;  // what xfem-visualize does
+      if (solutions) {  // with the fingerprints xfem-solve writes, so xfem-visualize/-rmserror can check a frame's inputs
+        xfem::Provenance made_for{{"enriched", body_fingerprint}, {"problem", problem_fingerprint}};
+        if (em.cut) made_for["cut"] = xfem::fingerprint(em.cut->mesh());
+        xfem::write_vector(step.u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string(),
+                           xfem::provenance_comments(made_for));
+      }
       if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      const double picture_start = xfem::cli::now();
       if (png) {
         picture.title = "t = " + g(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
         xfem::write_snapshot(frame.volume, frame.wound, (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(),
@@ -185,13 +225,14 @@ int main(int argc, char** argv) {
       }
       collection.push_back({t[k - 1], 0, vtu});
       collection.push_back({t[k - 1], 1, vtp});
+      const double pictured = png ? xfem::cli::now() - picture_start : 0.0;
       const double written = xfem::cli::now() - write_start;
       xfem::cli::info("step " + std::to_string(k) + "/" + std::to_string(steps) + ", t = " + g(t[k - 1]) + " s: " +
                       std::to_string(triangles) + " cut triangles, " +
                       std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
                       std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(solved) +
                       " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
-                      (step.schur_used ? ", Schur " : ", refactorization ") + g(step.solve_seconds) + "), written in " +
+                      (progressive ? ", incremental Schur " : step.schur_used ? ", Schur " : ", refactorization ") + g(step.solve_seconds) + "), written in " +
                       g(written) + " s");
       report["steps"].push_back({{"step", k},
                                  {"time", t[k - 1]},
@@ -207,11 +248,20 @@ int main(int argc, char** argv) {
                                  {"enriched_tets", step.enriched_tets},
                                  {"classify_seconds", step.classify_seconds},
                                  {"assemble_seconds", step.assemble_seconds},
-                                 {"solver", step.schur_used ? "schur" : "refactor"},
+                                 {"solver", progressive ? "incremental" : step.schur_used ? "schur" : "refactor"},
+                                 {"recomputed_tets", step.recomputed_tets},
+                                 {"keys_seconds", step.keys_seconds},
+                                 {"elements_seconds", step.elements_seconds},
+                                 {"kept_dofs", step.incremental.kept},
+                                 {"added_dofs", step.incremental.added},
+                                 {"refactored_rows", step.incremental.refactored},
+                                 {"region_added", step.incremental.region_added},
                                  {"schur_seconds", step.schur.schur_seconds},
                                  {"dense_seconds", step.schur.dense_seconds},
                                  {"solve_seconds", step.solve_seconds},
                                  {"seconds", solved},
+                                 {"frame_seconds", framed},
+                                 {"picture_seconds", pictured},
                                  {"write_seconds", written}});
       if (step.unsupported_dofs > 0)
         xfem::cli::detail(std::to_string(step.unsupported_dofs) + " enriched DOFs without support fixed to 0");

@@ -27,10 +27,15 @@ std::vector<double> cut_times(const TriangleMesh& cut, const std::string& file) 
   return a.values;
 }
 
-TriangleMesh cut_until(const TriangleMesh& sweep, const std::vector<double>& times, double t) {
+std::vector<int> cut_until_ids(const std::vector<double>& times, double t) {
   std::vector<int> keep;
-  for (int k = 0; k < sweep.triangles.rows(); ++k)
+  for (int k = 0; k < static_cast<int>(times.size()); ++k)
     if (times[k] <= t) keep.push_back(k);
+  return keep;
+}
+
+TriangleMesh cut_until(const TriangleMesh& sweep, const std::vector<double>& times, double t) {
+  const std::vector<int> keep = cut_until_ids(times, t);
   std::vector<int> new_id(sweep.points.rows(), -1);
   for (int k : keep)
     for (int c = 0; c < 3; ++c) new_id[sweep.triangles(k, c)] = 0;

@@ -17,6 +17,9 @@ std::vector<double> cut_times(const TriangleMesh& cut, const std::string& file);
 /// (in their order) and every array kept. May have no triangle.
 TriangleMesh cut_until(const TriangleMesh& sweep, const std::vector<double>& times, double t);
 
+/// The sweep's ids of cut_until's triangles: the k with times[k] <= t, increasing.
+std::vector<int> cut_until_ids(const std::vector<double>& times, double t);
+
 /// The K step times of a sweep whose triangles have times `times`: t_k = t0 + k (t1 - t0) / K,
 /// k = 1..K, t0 and t1 the first and last time (the last step is the whole cut). K >= 1.
 std::vector<double> step_times(const std::vector<double>& times, int steps);

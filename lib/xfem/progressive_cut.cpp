@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/progressive_cut.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 
 #include "xfem/assembly.h"
+#include "xfem/conforming_quadrature.h"
 #include "xfem/cholmod_solver.h"
 #include "xfem/dof_numbering.h"
 #include "xfem/element_stiffness.h"
@@ -71,35 +75,34 @@ UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering 
   return body;
 }
 
-CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut, const ClassifyOptions& options,
-                      CutSolver solver) {
-  CutSolution out;
+namespace {
+
+// Classifies the body against `cut` (none when empty), enriches it, and checks that every piece of
+// the cut body is held by a Dirichlet condition.
+void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutSurface>& cut,
+                         const ClassifyOptions& options, CutSolution& out) {
+  const auto t0 = std::chrono::steady_clock::now();
   const TetMesh& mesh = body.mesh;
-  auto t0 = std::chrono::steady_clock::now();
   const bool empty = !cut || cut->mesh().triangles.rows() == 0;
   const Classification c = empty ? classify_without_cut(mesh) : classify(mesh, *cut, options);
   out.counts = c.counts;
   out.em = enriched_mesh(mesh, c, empty ? nullptr : cut);
-  const EnrichedMesh& em = out.em;
   out.classify_seconds = seconds_since(t0);
+  std::vector<char> node_constrained(out.em.np, 0);
+  for (long dof : body.fixed) node_constrained[dof / 3] = 1;
+  const std::vector<Piece> pieces = find_pieces(out.em, node_constrained);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    if (!pieces[i].constrained)
+      throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
+                  std::to_string(i + 1) + " (" + std::to_string(pieces[i].tets) + " tets) has no Dirichlet condition");
+}
 
-  t0 = std::chrono::steady_clock::now();
-  {  // every piece of the cut body must be held by a Dirichlet condition
-    std::vector<char> node_constrained(em.np, 0);
-    for (long dof : body.fixed) node_constrained[dof / 3] = 1;
-    const std::vector<Piece> pieces = find_pieces(em, node_constrained);
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (!pieces[i].constrained)
-        throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
-                    std::to_string(i + 1) + " (" + std::to_string(pieces[i].tets) + " tets) has no Dirichlet condition");
-  }
-  // Only the tets with enriched DOFs contribute to enriched rows and columns: assemble them alone,
-  // in their order (the same sums as the whole assembly's), on the points they use, renumbered in
-  // order (the pattern wants every DOF in some tet); enriched DOFs keep their order after them.
-  std::vector<int> tets;
-  for (int t = 0; t < em.tets(); ++t)
-    if (em.size(t) > 4) tets.push_back(t);
-  out.enriched_tets = static_cast<long>(tets.size());
+// The tets `tets` of `em` alone, in their order, on the points they use renumbered in order (the
+// pattern wants every DOF in some tet); enriched DOFs keep their order after them. Element i of
+// the result has the same extended connectivity order, so the same element matrix, as tet tets[i].
+// `to_full` (optional) receives the sub-mesh point -> point map.
+EnrichedMesh sub_mesh(const EnrichedMesh& em, const std::vector<int>& tets, std::vector<long>* to_full_out = nullptr) {
+  const TetMesh& mesh = em.mesh;
   std::vector<long> to_sub(em.np, -1), to_full;  // original DOF <-> sub-mesh point
   for (int t : tets)
     for (int c = 0; c < 4; ++c) to_sub[mesh.tets(t, c)] = 0;
@@ -133,6 +136,26 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
   sub.n = em.n - shift;
   sub.front = em.front;
   sub.cut = em.cut;
+  if (to_full_out) *to_full_out = std::move(to_full);
+  return sub;
+}
+
+}  // namespace
+
+CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut, const ClassifyOptions& options,
+                      CutSolver solver) {
+  CutSolution out;
+  classify_and_enrich(body, cut, options, out);
+  const EnrichedMesh& em = out.em;
+  auto t0 = std::chrono::steady_clock::now();
+  // Only the tets with enriched DOFs contribute to enriched rows and columns: assemble them alone.
+  std::vector<int> tets;
+  for (int t = 0; t < em.tets(); ++t)
+    if (em.size(t) > 4) tets.push_back(t);
+  out.enriched_tets = static_cast<long>(tets.size());
+  std::vector<long> to_full;
+  const EnrichedMesh sub = sub_mesh(em, tets, &to_full);
+  const long np_sub = sub.np, shift = em.np - np_sub;
   const Problem& problem = body.problem;
   const bool conforming = problem.rule == Problem::Rule::Conforming;
   const SparseMatrix K = tets.empty() ? SparseMatrix(0, 0)
@@ -216,6 +239,280 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
   for (long i = 0; i < nf; ++i) out.u[body.free_dofs[i]] = x[i];
   for (long d = 0; d < dofs - first; ++d)
     if (index[d] >= 0) out.u[first + d] = x[nf + index[d]];
+  out.solve_seconds = seconds_since(t0);
+  return out;
+}
+
+namespace {
+
+// Everything an enriched tet's element matrix is computed from, besides the fixed geometry and
+// problem (equal keys, equal matrices):
+//  - its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which enters
+//    cut tets only) and its extended connectivity's layout (per entry the local node and which
+//    function: original, sign, branch 1-4);
+//  - the ids of the sweep's triangles whose box meets the tet's box: they make its cut pieces (the
+//    conforming rule's pieces and their sides). Where points are given their side by the closest
+//    cut point instead, the box is grown by as far as that point can be: the tet's longest edge h
+//    for a cut tet under the oversampling rule, 2 h with branch DOFs (a blending tet's points lie
+//    within 2 h of the front, so of the cut);
+//  - the front segments near it (sorted), where the front matters: with branch DOFs those within
+//    (distance to the nearest) + 3 h of its centroid (the crack-tip coordinates come from the
+//    nearest front points and the frame interpolated between neighbouring segments of length
+//    <= h); a partially cut tet without branch DOFs is split at the front: those within 2 h. A
+//    completely cut tet without branch DOFs never looks at the front (one point per cut piece).
+std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector<int>& ids,
+                                const std::vector<Eigen::Matrix<double, 3, 2>>& boxes, bool conforming) {
+  std::vector<double> key;
+  key.push_back(em.cut_class[t]);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo, centre = Eigen::Vector3d::Zero();
+  double h = 0;
+  for (int c = 0; c < 4; ++c) {
+    const int p = em.mesh.tets(t, c);
+    key.push_back(em.cut_class[t] > 0 ? em.side[p] : 0);  // sides enter sign DOFs, of cut tets only
+    const Eigen::Vector3d x = em.mesh.points.row(p).transpose();
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+    centre += 0.25 * x;
+    for (int d = c + 1; d < 4; ++d) h = std::max(h, (x - em.mesh.points.row(em.mesh.tets(t, d)).transpose()).norm());
+  }
+  bool branch = false;
+  key.push_back(em.size(t));
+  for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) {
+    const long d = em.dofs[e];
+    const int function = d < em.np ? 0 : d < em.np + em.ns ? 1 : 2 + static_cast<int>((d - em.np - em.ns) % 4);
+    branch = branch || function >= 2;
+    key.push_back(8 * function + em.local[e]);
+  }
+  const double grow = branch ? 2 * h : !conforming ? h : 0.0;
+  lo.array() -= grow;
+  hi.array() += grow;
+  key.push_back(-1);
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+    if ((boxes[k].col(0).array() <= hi.array()).all() && (boxes[k].col(1).array() >= lo.array()).all())
+      key.push_back(ids[k]);
+  key.push_back(-1);
+  const auto& segments = em.front.segments();
+  if (segments.empty() || (!branch && em.cut_class[t] != 1)) return key;
+  std::vector<double> distance(segments.size());
+  double nearest = 1e300;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    distance[k] = point_segment_distance(centre, segments[k].p0, segments[k].p1);
+    nearest = std::min(nearest, distance[k]);
+  }
+  const double reach = branch ? nearest + 3 * h : 2 * h;
+  std::vector<std::array<double, 9>> near;
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (distance[k] <= reach) {
+      const auto& s = segments[k];
+      near.push_back({s.p0.x(), s.p0.y(), s.p0.z(), s.p1.x(), s.p1.y(), s.p1.z(), s.b.x(), s.b.y(), s.b.z()});
+    }
+  std::sort(near.begin(), near.end());
+  for (const auto& s : near) key.insert(key.end(), s.begin(), s.end());
+  return key;
+}
+
+}  // namespace
+
+ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& options)
+    : body_(body),
+      options_(options),
+      rule_(oversampling_quadrature(body.problem.points, body.problem.refine)),
+      schur_(*body.factor) {}
+
+void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
+                             const std::function<void(double)>& progress) {
+  // The region: free original DOFs of the tets with enriched DOFs at some step (a step's front
+  // enriches tets around it that the whole sweep's cut does not: the union over the steps).
+  std::vector<int> region;
+  for (const auto& cut : cuts) {
+    if (!cut || cut->mesh().triangles.rows() == 0) continue;
+    const EnrichedMesh em = enriched_mesh(body_.mesh, classify(body_.mesh, *cut, options_), cut);
+    for (int t = 0; t < em.tets(); ++t)
+      if (em.size(t) > 4)
+        for (int c = 0; c < 4; ++c)
+          for (int i = 0; i < 3; ++i) {
+            const int f = body_.reduced[3 * em.mesh.tets(t, c) + i];
+            if (f >= 0) region.push_back(f);
+          }
+  }
+  std::sort(region.begin(), region.end());
+  region.erase(std::unique(region.begin(), region.end()), region.end());
+  schur_.extend_region(region, progress);
+}
+
+CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
+  CutSolution out;
+  out.schur_used = true;
+  classify_and_enrich(body_, cut, options_, out);
+  const EnrichedMesh& em = out.em;
+  const Problem& problem = body_.problem;
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<Eigen::Matrix<double, 3, 2>> boxes;
+  if (em.cut) {
+    const TriangleMesh& tm = em.cut->mesh();
+    if (static_cast<long>(ids.size()) != tm.triangles.rows())
+      throw Error("ProgressiveCut::step: " + std::to_string(ids.size()) + " triangle ids for " +
+                  std::to_string(tm.triangles.rows()) + " triangles");
+    boxes.resize(static_cast<std::size_t>(tm.triangles.rows()));
+    for (long k = 0; k < tm.triangles.rows(); ++k) {
+      boxes[k].col(0) = boxes[k].col(1) = tm.points.row(tm.triangles(k, 0)).transpose();
+      for (int c = 1; c < 3; ++c) {
+        boxes[k].col(0) = boxes[k].col(0).cwiseMin(tm.points.row(tm.triangles(k, c)).transpose());
+        boxes[k].col(1) = boxes[k].col(1).cwiseMax(tm.points.row(tm.triangles(k, c)).transpose());
+      }
+    }
+  }
+  // Element matrices: reused where their inputs did not change, computed on a sub-mesh of the others.
+  std::vector<int> tets, stale;
+  std::vector<std::vector<double>> keys;
+  for (int t = 0; t < em.tets(); ++t) {
+    if (em.size(t) <= 4) continue;
+    tets.push_back(t);
+    std::vector<double> key = element_key(em, t, ids, boxes, problem.rule == Problem::Rule::Conforming);
+    const auto it = elements_.find(t);
+    if (it == elements_.end() || it->second.key != key) {
+      stale.push_back(t);
+      keys.push_back(std::move(key));
+    }
+  }
+  out.enriched_tets = static_cast<long>(tets.size());
+  out.recomputed_tets = static_cast<long>(stale.size());
+  out.keys_seconds = seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  if (!stale.empty()) {
+    const EnrichedMesh sub = sub_mesh(em, stale);
+    const Lame material = lame(problem.E, problem.nu);
+    const bool conforming = problem.rule == Problem::Rule::Conforming;
+    const CutElementSplits splits = conforming ? split_cut_elements(sub) : CutElementSplits();
+    PointRule points;
+    for (std::size_t i = 0; i < stale.size(); ++i) {
+      Element& element = elements_[stale[i]];
+      element.key = std::move(keys[i]);
+      if (conforming) {
+        conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
+        element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
+      } else {
+        element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
+      }
+    }
+  }
+
+  out.elements_seconds = seconds_since(t1);
+  // The enriched DOFs' columns of K, summed tet by tet in increasing order (so a column whose tets
+  // did not change is bitwise the same): per enriched DOF its point and function give its key.
+  const long np = em.np, ne = em.n - np, nf = static_cast<long>(body_.free_dofs.size());
+  std::vector<long> point_of(ne, -1);
+  std::vector<int> function_of(ne, 0);
+  std::vector<long> first(ne + 1, 0);
+  for (int t : tets)
+    for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
+      if (em.dofs[e] >= np) {
+        const long d = em.dofs[e] - np;
+        point_of[d] = em.mesh.tets(t, em.local[e]);
+        function_of[d] = em.dofs[e] < np + em.ns ? 0 : 1 + static_cast<int>((em.dofs[e] - np - em.ns) % 4);
+        ++first[d + 1];
+      }
+  for (long d = 0; d < ne; ++d) first[d + 1] += first[d];
+  std::vector<std::pair<int, int>> incidence(static_cast<std::size_t>(first[ne]));  // (tet, entry)
+  {
+    std::vector<long> fill(first.begin(), first.end() - 1);
+    for (int t : tets)
+      for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
+        if (em.dofs[e] >= np) incidence[fill[em.dofs[e] - np]++] = {t, static_cast<int>(e - em.offsets[t])};
+  }
+  const auto key_of = [&](long d, int i) { return (point_of[d] * 5 + function_of[d]) * 3 + i; };
+  std::vector<EnrichedColumn> columns;
+  std::vector<double> g_e;
+  std::vector<double> free_sum(nf, 0.0), enriched_sum(3 * ne, 0.0);
+  std::vector<int> free_rows;
+  std::vector<long> enriched_rows;
+  for (long d = 0; d < ne; ++d)
+    for (int i = 0; i < 3; ++i) {
+      double g = 0;
+      for (long a = first[d]; a < first[d + 1]; ++a) {
+        const int t = incidence[a].first, q = incidence[a].second;
+        const Eigen::MatrixXd& k = elements_.at(t).k;
+        const long base = em.offsets[t];
+        for (int r = 0; r < em.size(t); ++r) {
+          const long row = em.dofs[base + r];
+          for (int j = 0; j < 3; ++j) {
+            const double v = k(3 * r + j, 3 * q + i);
+            if (v == 0) continue;
+            if (row < np) {
+              const long s = 3 * row + j;
+              const int f = body_.reduced[s];
+              if (f < 0) {
+                g -= v * body_.constrained[s];  // the enriched rows' share of K_ec u_c
+              } else {
+                if (free_sum[f] == 0) free_rows.push_back(f);
+                free_sum[f] += v;
+              }
+            } else {
+              const long e = 3 * (row - np) + j;
+              if (enriched_sum[e] == 0) enriched_rows.push_back(e);
+              enriched_sum[e] += v;
+            }
+          }
+        }
+      }
+      EnrichedColumn column;
+      column.key = key_of(d, i);
+      std::sort(free_rows.begin(), free_rows.end());
+      free_rows.erase(std::unique(free_rows.begin(), free_rows.end()), free_rows.end());
+      for (int f : free_rows) {
+        if (free_sum[f] != 0) column.se.emplace_back(f, free_sum[f]);
+        free_sum[f] = 0;
+      }
+      std::sort(enriched_rows.begin(), enriched_rows.end());
+      enriched_rows.erase(std::unique(enriched_rows.begin(), enriched_rows.end()), enriched_rows.end());
+      for (long e : enriched_rows) {
+        if (enriched_sum[e] != 0) column.ee.emplace_back(key_of(e / 3, static_cast<int>(e % 3)), enriched_sum[e]);
+        enriched_sum[e] = 0;
+      }
+      free_rows.clear();
+      enriched_rows.clear();
+      std::sort(column.ee.begin(), column.ee.end());
+      // A DOF without support (a zero column: xfem-solve fixes it to 0) is left out.
+      if (column.se.empty() && column.ee.empty()) {
+        ++out.unsupported_dofs;
+        continue;
+      }
+      columns.push_back(std::move(column));
+      g_e.push_back(g);
+    }
+  out.enriched_dofs = static_cast<long>(columns.size());
+  out.assemble_seconds = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  schur_.update(columns, &out.incremental);
+  const long m = static_cast<long>(columns.size());
+  // S u_e = g_e - K_es w, then u_s = w - A^-1 K_se u_e (one solve).
+  Eigen::VectorXd r(m);
+  for (long c = 0; c < m; ++c) {
+    double v = g_e[c];
+    for (const auto& e : columns[c].se) v -= e.second * body_.w[e.first];
+    r[c] = v;
+  }
+  const Eigen::VectorXd u_e = m > 0 ? schur_.solve(r) : Eigen::VectorXd();
+  Eigen::VectorXd u_s = body_.w;
+  if (m > 0) {
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nf, 1);
+    for (long c = 0; c < m; ++c)
+      for (const auto& e : columns[c].se) b(e.first, 0) += e.second * u_e[c];
+    u_s -= body_.factor->solve(b).col(0);
+  }
+  out.u = Eigen::VectorXd::Zero(3 * em.n);
+  out.u.head(3 * np) = body_.constrained;
+  for (long i = 0; i < nf; ++i) out.u[body_.free_dofs[i]] = u_s[i];
+  // Enriched scalar DOF 3 np + 3 d + i has key key_of(d, i); supported ones in `columns` order.
+  std::unordered_map<long, long> column_of;
+  for (long c = 0; c < m; ++c) column_of[columns[c].key] = c;
+  for (long d = 0; d < ne; ++d)
+    for (int i = 0; i < 3; ++i) {
+      const auto it = column_of.find(key_of(d, i));
+      if (it != column_of.end()) out.u[3 * np + 3 * d + i] = u_e[it->second];
+    }
+  if (!out.u.allFinite()) throw Error("the Schur complement solve gave a non-finite solution (numerically singular)");
   out.solve_seconds = seconds_since(t0);
   return out;
 }

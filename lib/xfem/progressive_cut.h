@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "xfem/classification.h"
 #include "xfem/dirichlet.h"
 #include "xfem/enriched_mesh.h"
+#include "xfem/incremental_schur.h"
+#include "xfem/oversampling_quadrature.h"
 #include "xfem/problem.h"
 #include "xfem/schur_solver.h"
 
@@ -63,6 +67,10 @@ struct CutSolution {
   double classify_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
   bool schur_used = false;         ///< which solver ran (Auto decides per cut)
   SchurStats schur;
+  long recomputed_tets = 0;        ///< ProgressiveCut: tets whose element matrices were computed (the others reused)
+  double keys_seconds = 0;         ///< ProgressiveCut, part of assemble_seconds: which element matrices to compute
+  double elements_seconds = 0;     ///< ProgressiveCut, part of assemble_seconds: computing them
+  IncrementalSchurStats incremental;  ///< ProgressiveCut: what the Schur complement's update did
 };
 
 /// Classifies the body against `cut`, numbers the DOFs, assembles only the tets with enriched DOFs
@@ -72,5 +80,41 @@ struct CutSolution {
 /// Dirichlet condition.
 CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> cut,
                       const ClassifyOptions& options = {}, CutSolver solver = CutSolver::Auto);
+
+/// A sweep's cuts solved one after the other on the uncut body, each step at the cost of what the
+/// cut's growth changed (issue 20). Per step: the body is classified against the cut and enriched
+/// as solve_cut does; element matrices are computed only for enriched tets whose inputs changed
+/// since the previous step (their enrichment layout, node sides, cut class, the sweep's triangles
+/// near them and, where the front matters, the front segments near them), the others reused; the
+/// enriched DOFs' columns of K are gathered from them and the Schur complement on the enriched DOFs
+/// updated (IncrementalSchur: only new or changed columns computed, its Cholesky factor refactorized
+/// from the first changed row on). The solution equals solve_cut's (and the six tools') to round-off.
+class ProgressiveCut {
+ public:
+  explicit ProgressiveCut(const UncutBody& body, const ClassifyOptions& options = {});
+
+  /// Computes the body's response A^-1 on the free original DOFs that the cuts `cuts` (every step
+  /// of the sweep) couple to enriched DOFs, once: after it, a step needs one solve with the factor.
+  /// Optional (a step extends the region by what it needs), but without it the steps pay for their
+  /// new region DOFs (a solve each, in blocks).
+  void prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
+               const std::function<void(double)>& progress = {});
+  long region_size() const { return schur_.region_size(); }
+
+  /// Solves the cut `cut` whose triangle k is triangle `ids[k]` of the sweep (the identity of a
+  /// triangle from step to step: cut_until keeps the sweep's order). Throws xfem::Error as solve_cut.
+  CutSolution step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids);
+
+ private:
+  struct Element {
+    std::vector<double> key;  // what the element matrix was computed from (element_key)
+    Eigen::MatrixXd k;
+  };
+  const UncutBody& body_;
+  ClassifyOptions options_;
+  Quadrature rule_;
+  IncrementalSchur schur_;
+  std::unordered_map<int, Element> elements_;
+};
 
 }  // namespace xfem

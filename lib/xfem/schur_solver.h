@@ -1,38 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
-#include <memory>
 
 #include "xfem/cholmod_solver.h"
 #include "xfem/matrix_market.h"
 
 namespace xfem {
-
-/// One CHOLMOD Cholesky factorization of a symmetric positive definite matrix A (the uncut body's
-/// K_ss with the Dirichlet DOFs eliminated), kept for many solves: progressive cutting changes
-/// only the enriched rows and columns of K, never A (DESIGN.md, "Cutting does not touch the
-/// standard block"), so every step of a sweep reuses it.
-class CholeskyFactor {
- public:
-  /// Analyses and factorizes A (only its lower triangle is read). Throws NotPositiveDefinite or
-  /// xfem::Error like cholmod_solve.
-  explicit CholeskyFactor(const SparseMatrix& A, Ordering ordering = Ordering::Metis);
-  ~CholeskyFactor();
-  CholeskyFactor(const CholeskyFactor&) = delete;
-  CholeskyFactor& operator=(const CholeskyFactor&) = delete;
-
-  long size() const;
-  /// A^-1 B for every column of B at once (one pass over the factor per call).
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-
-  std::string ordering;          ///< "metis" or "amd": the one used
-  double factor_nonzeros = 0;    ///< entries of L
-  double analyze_seconds = 0, factor_seconds = 0;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
 
 /// What schur_solve did.
 struct SchurStats {

@@ -40,6 +40,8 @@ P=$S/problem.json
 expect_error "plain.vtp: no cell array 'time'" "$S/box.vtu" --cut "$S/plain.vtp" --problem "$P" --steps 2
 expect_error "--steps 0: the number of steps must be at least 1" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 0
 expect_error "--steps -3" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps -3
+expect_error "--backend petsc: not available in xfem-sweep" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 \
+  --backend petsc
 expect_error "missing.vtu" "$S/missing.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2
 sed 's/"value": \[0, 0, 0\]/"exact": {"rigid": {"above": {"translation": [0, 0, 0]}}}/' "$P" >"$S/exact.json"
 expect_error "prescribes an exact field" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/exact.json" --steps 2
@@ -50,7 +52,9 @@ touch "$S/file"
 
 # The sweep, then every step from scratch.
 "$SWEEP" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/frames" --report "$S/report.json" \
-  --solutions --cuts --solver schur 2>"$S/progress.txt" || fail "sweep: $(cat "$S/progress.txt")"
+  --solutions --cuts 2>"$S/progress.txt" || fail "sweep: $(cat "$S/progress.txt")"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/schur" --solutions --solver schur \
+  || fail "--solver schur"
 "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/refactor" --solutions --solver refactor \
   || fail "--solver refactor"
 [ "$(grep -c "^xfem-sweep: step [1-5]/5" "$S/progress.txt")" -eq 5 ] || fail "progress per step: $(cat "$S/progress.txt")"
@@ -83,6 +87,10 @@ for k in 001 002 003 004 005; do
     { n++; d = $1 - $2; dd += d * d; uu += $1 * $1 }
     END { r = sqrt(dd / uu); if (!(r <= 1e-9)) { print "step " k ": relative difference " r; exit 1 } }' \
     || fail "step $k (--solver refactor) differs from the from-scratch run"
+  paste <(mtx_values "$D/u.mtx") <(mtx_values "$S/schur/u_$k.mtx") | awk -v k="$k" '
+    { n++; d = $1 - $2; dd += d * d; uu += $1 * $1 }
+    END { r = sqrt(dd / uu); if (!(r <= 1e-9)) { print "step " k ": relative difference " r; exit 1 } }' \
+    || fail "step $k (--solver schur) differs from the from-scratch run"
   [ "$(mtx_values "$D/u.mtx" | wc -l)" -eq "$(mtx_values "$F/u_$k.mtx" | wc -l)" ] || fail "step $k: N differs"
   # The frame is xfem-visualize's output on the same split: same points and cells.
   for pair in "deformed.vtu step_$k.vtu" "wound.vtp step_${k}_wound.vtp"; do
@@ -92,6 +100,15 @@ for k in 001 002 003 004 005; do
     [ "$a" = "$b" ] || fail "step $k: $2 ($b) and xfem-visualize's $1 ($a) differ in size"
   done
 done
+# A frame's solution carries the fingerprints of its inputs: xfem-visualize takes it with the body
+# enriched for its own step's cut and its problem, and refuses it with another problem.
+grep -q "^% xfem-fingerprint cut fnv1a64:" "$S/frames/u_003.mtx" || fail "u_003.mtx: no cut fingerprint"
+"$B/xfem-visualize" -q "$S/scratch_003/enriched.vtu" --cut "$S/frames/cut_003.vtp" --solution "$S/frames/u_003.mtx" \
+  --problem "$P" -o "$S/check.vtu" || fail "xfem-visualize on the sweep's u_003.mtx"
+sed 's/"E": 1e3/"E": 2e3/' "$P" >"$S/stiffer.json"
+"$B/xfem-visualize" -q "$S/scratch_003/enriched.vtu" --cut "$S/frames/cut_003.vtp" --solution "$S/frames/u_003.mtx" \
+  --problem "$S/stiffer.json" -o "$S/check.vtu" 2>"$S/err.txt"
+[ $? -eq 1 ] && grep -qF "u_003.mtx: does not belong to" "$S/err.txt" || fail "u_003.mtx with another problem: $(cat "$S/err.txt")"
 # The sweep grows: the last step has more enriched DOFs than the first, and the first step cuts.
 first=$(grep -o '"enriched_dofs": *[0-9]*' "$S/report.json" | head -1 | grep -o '[0-9]*$')
 last=$(grep -o '"enriched_dofs": *[0-9]*' "$S/report.json" | tail -1 | grep -o '[0-9]*$')

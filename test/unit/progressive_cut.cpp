@@ -2,6 +2,7 @@
 // Progressive cutting: the standard block does not change with the cut, and the block elimination
 // on the enriched DOFs gives the whole system's solution.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -16,6 +17,7 @@
 #include "xfem/cut_surface.h"
 #include "xfem/dirichlet.h"
 #include "xfem/error.h"
+#include "xfem/incremental_schur.h"
 #include "xfem/paraview_collection.h"
 #include "xfem/progressive_cut.h"
 #include "xfem/schur_solver.h"
@@ -152,6 +154,105 @@ TEST_CASE("schur solve: the block elimination solves the block system", "[progre
   CHECK((K * u - g).norm() <= 1e-13 * g.norm());
   K_ee.coeffRef(1, 1) = -2;  // S not positive definite
   CHECK_THROWS_WITH(xfem::schur_solve(factor, w, K_se, K_ee, g.tail(m)), Catch::Contains("not positive definite"));
+}
+
+TEST_CASE("progressive cut: every step of a sweep equals the whole system's solution, in any order",
+          "[progressive_cut]") {
+  // A blade 0.3 deep from z = 0.6 moving along y through a 8 x 8 x 4 box of height 0.5: its front
+  // (bottom edge and leading edge) inside the box all along, tets far behind the leading edge kept.
+  const xfem::TetMesh mesh = xfem::box_mesh({8, 8, 4}, {0, 0, 0}, {1, 1, 0.5});
+  xfem::BladePath path;
+  path.polyline = {{0.43, -0.05, 0.6}, {0.43, 0.95, 0.6}};
+  const xfem::TriangleMesh sweep = xfem::cut_sweep(path, 0.3, {0, 0, -1}, 0, 0.06, 1.0);
+  const std::vector<double> times = xfem::cut_times(sweep, "sweep");
+  const std::string conditions = R"(
+    "material": {"E": 1e3, "nu": 0.3},
+    "dirichlet": [{"name": "bottom", "selector": {"box": {"lo": [-1, -1, -1], "hi": [2, 2, 0]}}, "value": [0, 0, 0]}],
+    "neumann": [{"name": "left", "selector": {"box": {"lo": [-1, -1, -1], "hi": [0, 2, 3]}}, "traction": [-10, 0, 0]},
+                {"name": "right", "selector": {"box": {"lo": [1, -1, -1], "hi": [2, 2, 3]}}, "traction": [10, 0, 3]}])";
+  const std::vector<double> t = xfem::step_times(times, 6);
+  // The default (conforming) rule with steps in order, then backwards and out of order (the answer
+  // must not depend on the history); the oversampling rule (its points' sides from the cut) in order.
+  for (const auto& [integration, order] :
+       {std::pair<std::string, std::vector<int>>{"", {0, 1, 2, 3, 4, 5, 2, 5, 0, 4}},
+        std::pair<std::string, std::vector<int>>{R"(, "integration": {"rule": "oversampling"})", {1, 2, 3, 4}}}) {
+    INFO("integration '" << integration << "'");
+    const xfem::Problem p = xfem::parse_problem(xfem::Json::parse("{" + conditions + integration + "}"), "p.json");
+    const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
+    xfem::ProgressiveCut sweeping(body);
+    long reused_tets = 0, kept_dofs = 0;
+    for (int k : order) {
+      INFO("step " << k + 1);
+      const auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k]));
+      const xfem::CutSolution step = sweeping.step(cut, xfem::cut_until_ids(times, t[k]));
+      const xfem::CutSolution whole = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Refactor);
+      REQUIRE(step.u.size() == whole.u.size());
+      CHECK(step.enriched_dofs == whole.enriched_dofs);
+      CHECK(step.unsupported_dofs == whole.unsupported_dofs);
+      CHECK((step.u - whole.u).norm() <= 1e-10 * whole.u.norm());
+      CHECK(step.enriched_dofs > 0);
+      reused_tets += step.enriched_tets - step.recomputed_tets;
+      kept_dofs += step.incremental.kept;
+    }
+    // The point of it: element matrices and Schur columns were reused.
+    CHECK(reused_tets > 0);
+    CHECK(kept_dofs > 0);
+  }
+}
+
+TEST_CASE("incremental Schur: kept, changed, new and removed columns give the Schur complement of the current ones",
+          "[progressive_cut]") {
+  // A: 1D Laplacian-like SPD (n = 30); enriched DOFs couple to a few free DOFs each.
+  const int n = 30;
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 4.0);
+    if (i + 1 < n) t.emplace_back(i + 1, i, -1.0), t.emplace_back(i, i + 1, -1.0);
+  }
+  xfem::SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  const xfem::CholeskyFactor factor(A);
+  const Eigen::MatrixXd Ainv = Eigen::MatrixXd(A).inverse();
+  // Column of DOF `key`: couples to free DOFs key % n and (3 key) % n; K_ee diagonal 5 + `bump`,
+  // and -0.5 with key + 1 (when present).
+  const auto column = [&](long key, double bump, const std::vector<long>& present) {
+    xfem::EnrichedColumn c;
+    c.key = key;
+    const int a = static_cast<int>(key % n), b = static_cast<int>((3 * key) % n);
+    if (a == b) c.se = {{a, 1.0}};
+    else c.se = {{std::min(a, b), 0.7}, {std::max(a, b), -0.4}};
+    for (long other : present)
+      if (other == key - 1 || other == key + 1) c.ee.emplace_back(other, -0.5);
+    c.ee.emplace_back(key, 5.0 + bump);
+    std::sort(c.ee.begin(), c.ee.end());
+    return c;
+  };
+  xfem::IncrementalSchur schur(factor);
+  schur.extend_region({0, 1, 2});
+  const std::vector<std::vector<long>> steps = {{1, 2, 3, 4}, {1, 2, 3, 4, 5, 6}, {2, 3, 4, 5, 6, 7, 9}, {9, 2, 3, 4, 11}, {3}};
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    INFO("update " << s);
+    std::vector<xfem::EnrichedColumn> cols;
+    for (long key : steps[s]) cols.push_back(column(key, s == 2 && key == 4 ? 1.0 : 0.0, steps[s]));  // 4 changes once
+    xfem::IncrementalSchurStats st;
+    schur.update(cols, &st);
+    const long m = static_cast<long>(cols.size());
+    Eigen::MatrixXd K_se = Eigen::MatrixXd::Zero(n, m), S = Eigen::MatrixXd::Zero(m, m);
+    for (long j = 0; j < m; ++j) {
+      for (const auto& e : cols[j].se) K_se(e.first, j) = e.second;
+      for (const auto& e : cols[j].ee)
+        for (long i = 0; i < m; ++i)
+          if (cols[i].key == e.first) S(i, j) = e.second;
+    }
+    S -= K_se.transpose() * Ainv * K_se;
+    Eigen::VectorXd r(m);
+    for (long i = 0; i < m; ++i) r[i] = 1.0 + 0.3 * i;
+    const Eigen::VectorXd x = schur.solve(r);
+    CHECK((S * x - r).norm() <= 1e-12 * r.norm());
+    if (s == 1) CHECK(st.kept == 3);  // 1, 2 and 3 kept; 4 gained the neighbour 5
+    if (s == 4) CHECK(st.added == 1);
+  }
+  CHECK(schur.region_size() >= 3);
 }
 
 TEST_CASE("cut sweep: times, the cut at a time, step times", "[cut_sweep]") {

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/incremental_schur.h"
+
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <chrono>
+
+#include "xfem/error.h"
+
+// LAPACK / BLAS (OpenBLAS behind CHOLMOD): the bordered Cholesky update is O(p^2 k) for p kept
+// and k new rows, which wants an optimised triangular solve.
+extern "C" {
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+}
+
+namespace xfem {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+void IncrementalSchur::extend_region(const std::vector<int>& free_dofs, const std::function<void(double)>& progress,
+                                     int block) {
+  const long nf = A_.size();
+  if (in_region_.empty()) in_region_.assign(static_cast<std::size_t>(nf), -1);
+  std::vector<int> fresh;
+  for (int f : free_dofs) {
+    if (f < 0 || f >= nf) throw Error("IncrementalSchur: free DOF " + std::to_string(f) + " out of range");
+    if (in_region_[f] >= 0) continue;
+    in_region_[f] = static_cast<int>(region_.size() + fresh.size());
+    fresh.push_back(f);
+  }
+  if (fresh.empty()) return;
+  const long r0 = static_cast<long>(region_.size()), r1 = r0 + static_cast<long>(fresh.size());
+  region_.insert(region_.end(), fresh.begin(), fresh.end());
+  Eigen::MatrixXd G(r1, r1);
+  G.topLeftCorner(r0, r0) = G_.topLeftCorner(r0, r0);
+  G_.resize(0, 0);
+  const long k = static_cast<long>(fresh.size());
+  for (long j0 = 0; j0 < k; j0 += block) {
+    const long nb = std::min<long>(block, k - j0);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nf, nb);
+    for (long j = 0; j < nb; ++j) B(fresh[j0 + j], j) = 1.0;
+    const Eigen::MatrixXd X = A_.solve(B);
+    for (long j = 0; j < nb; ++j) {
+      const long c = r0 + j0 + j;
+      for (long i = 0; i < r1; ++i) G(i, c) = X(region_[i], j);
+      for (long i = 0; i < r0; ++i) G(c, i) = G(i, c);  // the old rows of the new columns, by symmetry
+    }
+    if (progress) progress(double(j0 + nb) / k);
+  }
+  G_ = std::move(G);
+}
+
+void IncrementalSchur::reserve(long m) {
+  if (m <= S_.rows()) return;
+  const long cap = std::max<long>(m, S_.rows() + S_.rows() / 2);
+  Eigen::MatrixXd S(cap, cap), L(cap, cap);
+  S.topLeftCorner(m_, m_) = S_.topLeftCorner(m_, m_);
+  L.topLeftCorner(m_, m_) = L_.topLeftCorner(m_, m_);
+  S_ = std::move(S);
+  L_ = std::move(L);
+}
+
+void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, IncrementalSchurStats* stats) {
+  IncrementalSchurStats local;
+  IncrementalSchurStats& st = stats ? *stats : local;
+  st = IncrementalSchurStats();
+  const long n = static_cast<long>(cols.size());
+  // Which of the previous columns are kept (bitwise the same), which are new or changed.
+  std::vector<char> kept(static_cast<std::size_t>(m_), 0);
+  std::vector<long> added;
+  for (long c = 0; c < n; ++c) {
+    const auto it = position_.find(cols[c].key);
+    if (it != position_.end() && columns_[it->second] == cols[c]) kept[it->second] = 1;
+    else added.push_back(c);
+  }
+  long p = m_;  // the first S row that changes: the factor's rows before it stay
+  for (long q = 0; q < m_; ++q)
+    if (!kept[q]) {
+      p = q;
+      break;
+    }
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    std::vector<int> reach;
+    for (long c : added)
+      for (const auto& e : cols[c].se) reach.push_back(e.first);
+    const long before = region_size();
+    extend_region(reach);
+    st.region_added = region_size() - before;
+  }
+  st.region_seconds = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  // The new order: rows 0..p-1 as they were, the kept ones after p moved up, the new ones last.
+  long m_kept = p;
+  for (long q = p; q < m_; ++q) m_kept += kept[q];
+  const long m = m_kept + static_cast<long>(added.size());
+  st.kept = m_kept;
+  st.added = static_cast<long>(added.size());
+  st.removed = m_ - m_kept;
+  reserve(m);
+  {
+    long w = p;
+    for (long q = p; q < m_; ++q)
+      if (kept[q]) {
+        if (w != q) S_.col(w).head(m_) = S_.col(q).head(m_);
+        ++w;
+      }
+    w = p;
+    for (long q = p; q < m_; ++q)
+      if (kept[q]) {
+        if (w != q) {
+          S_.row(w).head(m_kept) = S_.row(q).head(m_kept);
+          L_.row(w).head(p) = L_.row(q).head(p);
+        }
+        ++w;
+      }
+  }
+  std::vector<EnrichedColumn> order;
+  order.reserve(static_cast<std::size_t>(m));
+  for (long q = 0; q < m_; ++q)
+    if (kept[q]) order.push_back(std::move(columns_[q]));
+  for (long c : added) order.push_back(cols[c]);
+  columns_ = std::move(order);
+  position_.clear();
+  for (long q = 0; q < m; ++q) position_[columns_[q].key] = q;
+  caller_.assign(static_cast<std::size_t>(n), 0);
+  for (long c = 0; c < n; ++c) caller_[c] = position_.at(cols[c].key);
+  m_ = m;
+
+  // The new columns of S: K_ee - K_eR G K_Re, one product with G for all of them.
+  const long k = m - m_kept, r = region_size();
+  if (k > 0) {
+    std::vector<Eigen::Triplet<double, int>> trip;
+    for (long q = 0; q < m; ++q)
+      for (const auto& e : columns_[q].se) trip.emplace_back(in_region_[e.first], static_cast<int>(q), e.second);
+    SparseMatrix Kr(static_cast<int>(r), static_cast<int>(m));
+    Kr.setFromTriplets(trip.begin(), trip.end());
+    const SparseMatrix Kr_new = Kr.middleCols(static_cast<int>(m_kept), static_cast<int>(k));
+    const Eigen::MatrixXd V = G_ * Kr_new;                          // r x k
+    const Eigen::MatrixXd W = SparseMatrix(Kr.transpose()) * V;     // m x k
+    for (long j = 0; j < k; ++j) {
+      const long a = m_kept + j;
+      S_.col(a).head(m) = -W.col(j);
+      for (const auto& e : columns_[a].ee) {
+        const auto it = position_.find(e.first);
+        if (it != position_.end()) S_(it->second, a) += e.second;
+      }
+    }
+    for (long a = m_kept; a < m; ++a) {
+      for (long i = 0; i < m_kept; ++i) S_(a, i) = S_(i, a);
+      for (long i = m_kept; i < a; ++i) S_(i, a) = S_(a, i);
+    }
+  }
+  st.columns_seconds = seconds_since(t0);
+
+  // The factor: rows 0..p-1 kept; the new rows' part left of p by a triangular solve; the trailing
+  // block S(p:, p:) - L(p:, :p) L(p:, :p)^T factorized.
+  t0 = std::chrono::steady_clock::now();
+  const int ld = static_cast<int>(L_.rows());
+  if (k > 0 && p > 0) {
+    Eigen::MatrixXd X = S_.block(0, m_kept, p, k);
+    const int pi = static_cast<int>(p), ki = static_cast<int>(k);
+    const double one = 1.0;
+    dtrsm_("L", "L", "N", "N", &pi, &ki, &one, L_.data(), &ld, X.data(), &pi);
+    L_.block(m_kept, 0, k, p) = X.transpose();
+  }
+  const long t = m - p;
+  st.refactored = t;
+  if (t > 0) {
+    L_.block(p, p, t, t) = S_.block(p, p, t, t);
+    const int ti = static_cast<int>(t), pi = static_cast<int>(p);
+    if (p > 0) {
+      const double minus = -1.0, one = 1.0;
+      dsyrk_("L", "N", &ti, &pi, &minus, &L_(p, 0), &ld, &one, &L_(p, p), &ld);
+    }
+    int info = 0;
+    dpotrf_("L", &ti, &L_(p, p), &ld, &info);
+    if (info != 0)
+      throw Error("the enriched block's Schur complement is not positive definite: a piece of the cut body can move "
+                  "freely (no Dirichlet condition on it) or an enrichment is degenerate");
+  }
+  st.factor_seconds = seconds_since(t0);
+}
+
+Eigen::VectorXd IncrementalSchur::solve(const Eigen::VectorXd& r) const {
+  if (r.size() != static_cast<long>(caller_.size())) throw Error("IncrementalSchur::solve: right-hand side of the wrong size");
+  Eigen::VectorXd y(m_);
+  for (long c = 0; c < r.size(); ++c) y[caller_[c]] = r[c];
+  const auto L = L_.topLeftCorner(m_, m_).triangularView<Eigen::Lower>();
+  L.solveInPlace(y);
+  L.transpose().solveInPlace(y);
+  Eigen::VectorXd x(r.size());
+  for (long c = 0; c < r.size(); ++c) x[c] = y[caller_[c]];
+  if (!x.allFinite()) throw Error("the Schur complement solve gave a non-finite solution (numerically singular)");
+  return x;
+}
+
+}  // namespace xfem
