@@ -224,7 +224,7 @@ TEST_CASE("penny: Somigliana's integral of Sneddon's opening gives Sneddon's fie
                     Catch::Contains("closer than 0.25 radius"));
 }
 
-TEST_CASE("penny: under remote shear, an elastic field that tends to the remote shear; K_II, K_III along the front",
+TEST_CASE("penny: under remote shear an elastic field that tends to the remote shear and K_II and K_III along the front",
           "[penny]") {
   xfem::PennyField f = tilted_penny();
   f.sigma = 0.0;

@@ -123,7 +123,7 @@ TEST_CASE("stress_intensity: K does not depend on the domain radius", "[stress_i
 }
 
 TEST_CASE("stress_intensity: Sneddon's penny-shaped crack fed in exactly: K_I = 2 sigma sqrt(a / pi) along the "
-          "curved front, only with the curvature terms",
+          "curved front only with the curvature terms",
           "[stress_intensity][penny]") {
   // The disc of pipelines/verification (radius 0.3, centre (0.5, 0.5, 0.47), a 96-gon as there)
   // in an 8^3 box; the exact gradient of Sneddon's field is integrated, no X-FEM solution: what is
