@@ -199,6 +199,17 @@ TEST_CASE("stress_intensity: bad input", "[stress_intensity]") {
   o.plateau = 1.0;
   CHECK_THROWS_WITH(xfem::front_stress_intensity(em, Eigen::VectorXd::Zero(3 * em.n), 1, 0.3, g, o),
                     Catch::Contains("plateau"));
+  // A domain as large as the front's radius of curvature: the toroidal coordinates would reach the
+  // circle's axis.
+  {
+    const auto disc = std::make_shared<xfem::CutSurface>(
+        xfem::cut_disc(Eigen::Vector3d(0.5, 0.5, 0.47), Eigen::Vector3d::UnitZ(), 0.2, 4));
+    const xfem::EnrichedMesh dm = enriched_box(4, disc, 0.0);
+    xfem::FrontSifOptions big;
+    big.radius = 0.25;
+    CHECK_THROWS_WITH(xfem::front_stress_intensity(dm, Eigen::VectorXd::Zero(3 * dm.n), 1, 0.3, g, big),
+                      Catch::Contains("radius of curvature") && Catch::Contains("reduce --radius"));
+  }
   xfem::EnrichedMesh no_front = em;
   no_front.front = xfem::CrackFront();
   CHECK_THROWS_WITH(xfem::front_stress_intensity(no_front, Eigen::VectorXd::Zero(3 * em.n), 1, 0.3, g, {}),
