@@ -39,9 +39,33 @@ double default_domain_radius(const EnrichedMesh& em) {
 
 namespace {
 
+// Levels of 4-fold splitting of a surface triangle near the front's end (1/r integrand) and across
+// the cut (a jump): with the exact Williams fields the end points' K converge to 5e-5 with these.
+constexpr int kSurfaceLevelsFront = 12, kSurfaceLevelsCut = 8;
+
 Eigen::Matrix3d stress(const Eigen::Matrix3d& grad, const Lame& m) {
   const Eigen::Matrix3d eps = 0.5 * (grad + grad.transpose());
   return m.lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * m.mu * eps;
+}
+
+// A face of the body's surface: its tet, its nodes, its outward unit normal.
+struct SurfaceFace {
+  int tet = 0;
+  std::array<int, 3> nodes{};
+  Eigen::Vector3d normal;
+};
+
+// Radon's 7-point rule on a triangle (degree 5): barycentric coordinates and weights (sum 1).
+const std::array<std::array<double, 4>, 7>& triangle_rule() {
+  static const std::array<std::array<double, 4>, 7> r = [] {
+    const double s = std::sqrt(15.0);
+    const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21, w1 = (155 - s) / 1200;
+    const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21, w2 = (155 + s) / 1200;
+    return std::array<std::array<double, 4>, 7>{{{1.0 / 3, 1.0 / 3, 1.0 / 3, 9.0 / 40},
+                                                 {a1, a1, b1, w1}, {a1, b1, a1, w1}, {b1, a1, a1, w1},
+                                                 {a2, a2, b2, w2}, {a2, b2, a2, w2}, {b2, a2, a2, w2}}};
+  }();
+  return r;
 }
 
 // The integration points of one tet and the solution's gradient at each, computed once: the
@@ -126,19 +150,32 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
   // Nodes on the body's surface (on a face of one tet only): a domain reaching them away from the
   // front's ends misses the surface term of the domain form.
   std::vector<char> on_surface(np, 0);
+  std::vector<SurfaceFace> surface;
   {
-    std::map<std::array<int, 3>, int> faces;
+    std::map<std::array<int, 3>, std::pair<int, int>> faces;  // sorted nodes -> (uses, tet)
     for (int t = 0; t < em.tets(); ++t)
       for (int k = 0; k < 4; ++k) {
         std::array<int, 3> f;
         for (int i = 0, j = 0; i < 4; ++i)
           if (i != k) f[j++] = mesh.tets(t, i);
         std::sort(f.begin(), f.end());
-        ++faces[f];
+        auto& e = faces[f];
+        ++e.first;
+        e.second = t;
       }
-    for (const auto& [f, uses] : faces)
-      if (uses == 1)
+    for (const auto& [f, e] : faces)
+      if (e.first == 1) {
         for (int n : f) on_surface[n] = 1;
+        SurfaceFace sf;
+        sf.tet = e.second;
+        sf.nodes = f;
+        const Eigen::Vector3d p0 = mesh.points.row(f[0]), p1 = mesh.points.row(f[1]), p2 = mesh.points.row(f[2]);
+        sf.normal = (p1 - p0).cross(p2 - p0).normalized();
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        for (int i = 0; i < 4; ++i) centroid += 0.25 * mesh.points.row(mesh.tets(sf.tet, i)).transpose();
+        if (sf.normal.dot(centroid - p0) > 0) sf.normal = -sf.normal;  // outward
+        surface.push_back(sf);
+      }
   }
 
   // The longest edge of the mesh: how far the interpolated q reaches beyond the nodes where it is set.
@@ -230,6 +267,36 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
     const CrackTipFrame frame_P = aux.frame();
     const Eigen::Vector3d centre = kappa != 0 ? Eigen::Vector3d(f.x - f.a / kappa) : f.x;
     const Eigen::Vector3d nrm = f.b;
+    // The auxiliary fields' frame at x (ax, nrm, cx), kappa / h there and the crack-tip functions;
+    // false on the osculating circle's axis (kappa R < 0.9 keeps every domain away from it).
+    const auto aux_at = [&](const Eigen::Vector3d& x, int side, Eigen::Vector3d& ax, Eigen::Vector3d& cx, double& kh,
+                            BranchValues& F) {
+      ax = f.a;
+      cx = f.c;
+      kh = 0.0;
+      if (tangent) {
+        F = branch_functions(frame_P, x, side);
+        return true;
+      }
+      TipCoordinates tc;
+      if (kappa != 0.0) {
+        const Eigen::Vector3d v = x - centre;
+        const Eigen::Vector3d vp = v - v.dot(nrm) * nrm;
+        const double rho = vp.norm();
+        if (!(rho > 0)) return false;
+        ax = (kappa > 0 ? 1.0 : -1.0) * vp / rho;
+        cx = ax.cross(nrm);
+        tc.xa = (kappa > 0 ? 1.0 : -1.0) * (rho - 1.0 / std::abs(kappa));
+        kh = kappa / (1.0 + kappa * tc.xa);
+      } else {
+        tc.xa = ax.dot(x - f.x);
+      }
+      tc.xb = nrm.dot(x - f.x);
+      tc.grad.row(0) = ax.transpose();
+      tc.grad.row(1) = nrm.transpose();
+      F = branch_functions(tc, side);
+      return true;
+    };
     Eigen::Vector3d I = Eigen::Vector3d::Zero();
     for (int t = 0; t < em.tets(); ++t) {
       double qmin = 1.0, qmax = 0.0;
@@ -248,31 +315,10 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       const TetPoints& tp = points_of(t);
       for (int i = 0; i < tp.rule.size(); ++i) {
         const Eigen::Vector3d& x = tp.rule.x[i];
-        // The point's frame (ax, nrm, cx), its coordinates and kappa / h.
-        Eigen::Vector3d ax = f.a, cx = f.c;
+        Eigen::Vector3d ax, cx;
         BranchValues F;
         double kh = 0.0;
-        if (tangent) {
-          F = branch_functions(frame_P, x, tp.rule.side[i]);
-        } else {
-          TipCoordinates tc;
-          if (kappa != 0.0) {
-            const Eigen::Vector3d v = x - centre;
-            const Eigen::Vector3d vp = v - v.dot(nrm) * nrm;
-            const double rho = vp.norm();
-            if (!(rho > 0)) continue;  // on the circle's axis (kappa R < 0.9 keeps the domain away from it)
-            ax = (kappa > 0 ? 1.0 : -1.0) * vp / rho;
-            cx = ax.cross(nrm);
-            tc.xa = (kappa > 0 ? 1.0 : -1.0) * (rho - 1.0 / std::abs(kappa));
-            kh = kappa / (1.0 + kappa * tc.xa);
-          } else {
-            tc.xa = ax.dot(x - f.x);
-          }
-          tc.xb = nrm.dot(x - f.x);
-          tc.grad.row(0) = ax.transpose();
-          tc.grad.row(1) = nrm.transpose();
-          F = branch_functions(tc, tp.rule.side[i]);
-        }
+        if (!aux_at(x, tp.rule.side[i], ax, cx, kh, F)) continue;
         Eigen::Matrix3d Rx;
         Rx << ax, nrm, cx;
         const Eigen::Matrix3d& Gu = tp.grad_u[i];
@@ -300,6 +346,73 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
           }
           I[m] += tp.rule.weights[i] * integrand;
         }
+      }
+    }
+    // At an end of an open chain the domain meets the body's surface where the front does: the
+    // surface term of the domain form, int q [sigma:eps^aux (a.n) - (sigma n).(H a) - (sigma^aux n).(grad u a)] dS,
+    // over the surface faces where q > 0 (on a traction-free face only the last part is left: the
+    // plane-strain auxiliary field is not traction-free there). The integrand is singular like 1/r
+    // at the front's end and jumps across the cut: triangles near either are split 4-fold, up to
+    // kSurfaceLevelsFront / kSurfaceLevelsCut times, Radon's rule on each piece.
+    if (f.end && options.surface_term) {
+      const auto& rule = triangle_rule();
+      std::function<void(const SurfaceFace&, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d&,
+                         const Eigen::Vector3d&, int)>
+          integrate;
+      integrate = [&](const SurfaceFace& sf, const Eigen::Vector3d& A, const Eigen::Vector3d& B,
+                      const Eigen::Vector3d& Cc, const Eigen::Vector3d& qabc, int level) {
+        const double size = std::max({(B - A).norm(), (Cc - B).norm(), (A - Cc).norm()});
+        const Eigen::Vector3d mid = (A + B + Cc) / 3.0;
+        double sd, dist;
+        ch.closest(mid, sd, dist);
+        bool split = dist < 1.5 * size && level < kSurfaceLevelsFront;
+        if (!split && em.cut && level < kSurfaceLevelsCut) {
+          int plus = 0, minus = 0;
+          for (const Eigen::Vector3d* v : {&A, &B, &Cc, &mid}) {
+            const int sv = em.cut->side(*v);
+            plus += sv > 0;
+            minus += sv < 0;
+          }
+          split = plus > 0 && minus > 0;
+        }
+        if (split) {
+          const Eigen::Vector3d ab = 0.5 * (A + B), bc = 0.5 * (B + Cc), ca = 0.5 * (Cc + A);
+          const Eigen::Vector3d qab(0.5 * (qabc[0] + qabc[1]), 0.5 * (qabc[1] + qabc[2]), 0.5 * (qabc[2] + qabc[0]));
+          integrate(sf, A, ab, ca, Eigen::Vector3d(qabc[0], qab[0], qab[2]), level + 1);
+          integrate(sf, ab, B, bc, Eigen::Vector3d(qab[0], qabc[1], qab[1]), level + 1);
+          integrate(sf, ca, bc, Cc, Eigen::Vector3d(qab[2], qab[1], qabc[2]), level + 1);
+          integrate(sf, ab, bc, ca, Eigen::Vector3d(qab[0], qab[1], qab[2]), level + 1);
+          return;
+        }
+        const double area = 0.5 * (B - A).cross(Cc - A).norm();
+        for (const auto& r : rule) {
+          const Eigen::Vector3d x = r[0] * A + r[1] * B + r[2] * Cc;
+          const double qx = r[0] * qabc[0] + r[1] * qabc[1] + r[2] * qabc[2];
+          if (qx == 0.0) continue;
+          int side = em.cut ? em.cut->side(x) : 1;
+          if (side == 0) side = 1;
+          Eigen::Vector3d ax, cx;
+          BranchValues F;
+          double kh;
+          if (!aux_at(x, side, ax, cx, kh, F)) continue;
+          Eigen::Matrix3d Rx;
+          Rx << ax, nrm, cx;
+          const Eigen::Matrix3d Gu = grad_u(sf.tet, x, side);
+          const Eigen::Matrix3d S = stress(Gu, lm);
+          const Eigen::Vector3d Sn = S * sf.normal, Gu_a = Gu * ax;
+          for (int m = 0; m < 3; ++m) {
+            const Eigen::Matrix3d Ga = tangent ? Eigen::Matrix3d(C[m] * F.dF) : Eigen::Matrix3d(Rx * C[m] * F.dF);
+            const Eigen::Matrix3d Sa = stress(Ga, lm);
+            const double Se = S.cwiseProduct(0.5 * (Ga + Ga.transpose())).sum();
+            I[m] += r[3] * area * qx * (Se * ax.dot(sf.normal) - Sn.dot(Ga * ax) - (Sa * sf.normal).dot(Gu_a));
+          }
+        }
+      };
+      for (const SurfaceFace& sf : surface) {
+        const Eigen::Vector3d qn(q[sf.nodes[0]], q[sf.nodes[1]], q[sf.nodes[2]]);
+        if (qn.maxCoeff() == 0.0) continue;
+        integrate(sf, mesh.points.row(sf.nodes[0]).transpose(), mesh.points.row(sf.nodes[1]).transpose(),
+                  mesh.points.row(sf.nodes[2]).transpose(), qn, 0);
       }
     }
     I /= Q;

@@ -30,8 +30,10 @@ namespace xfem {
 ///   I_1 = 2 (1 - nu^2) / E K_I,   I_2 = 2 (1 - nu^2) / E K_II,   I_3 = K_III / mu,
 ///   G = (1 - nu^2) / E (K_I^2 + K_II^2) + K_III^2 / (2 mu).
 /// Exact for a straight front in a homogeneous body with traction-free cut faces when the
-/// integrals are exact and the domain stays inside the body (q = 0 on the outer boundary, apart
-/// from free faces the front meets at right angles). Signs follow the frame: K_I > 0 opens the
+/// integrals are exact and the domain stays inside the body (q = 0 on the outer boundary), apart
+/// from the ends of an open front, where the domain meets the body's surface: there the surface
+/// term + int q [sigma:eps^aux (a.n) - (sigma n).(H a) - (sigma^aux n).(grad u a)] dS over the
+/// surface faces with q > 0 is added (FrontSifOptions::surface_term). Signs follow the frame: K_I > 0 opens the
 /// cut; K_II, K_III change sign with the cut's normal.
 ///
 /// Curved front (FrontAuxiliary::Curvilinear, the default; Gosz, Dolbow & Moran 1998, Gosz & Moran
@@ -68,6 +70,10 @@ struct FrontSifOptions {
   double spacing = 0.0;  ///< distance between front points and hat half-width, metres; 0: R
   int order = 4;         ///< Gauss points per direction of the conforming rule (conforming_quadrature.h)
   FrontAuxiliary auxiliary = FrontAuxiliary::Curvilinear;
+  /// At an end of an open chain (on the body's surface) add the domain form's surface term over the
+  /// body's faces where q > 0 (on a free face: -q (sigma^aux n).(grad u a), the plane-strain auxiliary
+  /// field not being traction-free there); false: leave it out (before issue 15's second session).
+  bool surface_term = true;
 };
 
 /// One evaluation point on the front.
