@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
       "xfem-front",
       "Stress intensity factors K_I, K_II, K_III and the energy release rate G at points along the cut\n"
       "front, by the interaction integral in its 3D domain form (auxiliary Williams fields in the local\n"
-      "front frame; weight q = radial ramp x tangential hat, interpolated from the nodes). Plane strain\n"
+      "front frame, round the front's osculating circle with the curvature terms of a curved front;\n"
+      "weight q = radial ramp x tangential hat, interpolated from the nodes). Plane strain\n"
       "at interior front points; points at an end of the front (on the body's surface) are marked.\n"
       "Writes the front as a polyline with point arrays K_I, K_II, K_III, G (SI units) and/or a CSV\n"
       "(docs/FORMATS.md \"front.vtp\", \"front.csv\").",
@@ -81,6 +82,12 @@ int main(int argc, char** argv) {
   app.add_option("--spacing", options.spacing, "distance between front points, also the half-width of the "
                                                "tangential weight, metres (default: R)")
       ->check(CLI::PositiveNumber);
+  std::string auxiliary = "curvilinear";
+  app.add_option("--auxiliary", auxiliary,
+                 "auxiliary fields: curvilinear (default: Williams fields round the front's osculating circle, "
+                 "with the curvature terms), uncorrected (the same without the incompatibility and "
+                 "non-equilibrium terms), tangent (the straight tangent line's fields); the last two for studies")
+      ->check(CLI::IsMember({"curvilinear", "uncorrected", "tangent"}));
   app.add_option("--order", options.order, "Gauss points per direction of the conforming rule (default 4)")
       ->check(CLI::Range(1, 20));
   app.callback([&] {
@@ -106,6 +113,9 @@ int main(int argc, char** argv) {
     if (u.size() != 3 * em.n)
       throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
                         std::to_string(3 * em.n) + " for " + input);
+    options.auxiliary = auxiliary == "tangent"       ? xfem::FrontAuxiliary::Tangent
+                        : auxiliary == "uncorrected" ? xfem::FrontAuxiliary::CurvilinearUncorrected
+                                                     : xfem::FrontAuxiliary::Curvilinear;
     const double R = options.radius > 0 ? options.radius : xfem::default_domain_radius(em);
     options.radius = R;
     const auto points = xfem::front_stress_intensity(em, u, problem.E, problem.nu, problem.body_force, options,

@@ -105,6 +105,9 @@ int main(int argc, char** argv) {
     if (!output.empty()) xfem::cli::check_output(output, {".json"}, true);
     if (!exact_path.empty()) {
       const xfem::ExactField exact = xfem::read_exact_field(exact_path);
+      if (exact.kind == xfem::ExactField::Kind::Penny && exact.penny.shear.squaredNorm() > 0)
+        throw xfem::Error(exact_path + ": a penny with shear is not available as an exact field for errors (its shear "
+                          "part is a displacement by quadrature away from the disc, for Dirichlet data; no gradient)");
       if (cut_path.empty()) throw xfem::Error(mesh_path + ": --exact needs the X-FEM mesh's cut (--cut)");
       if (solution.empty()) throw xfem::Error(mesh_path + ": --exact needs the solution (--solution)");
       const xfem::EnrichedMesh em = xfem::read_enriched_mesh(mesh_path, cut_path);

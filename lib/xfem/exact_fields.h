@@ -56,23 +56,46 @@ struct WilliamsField {
 /// eta = cos theta (the disc is zeta = 0). Exact: the faces are traction-free, the stress tends to
 /// sigma n n^T far away, the opening is 2 u_z = 8 (1 - nu^2) sigma / (pi E) sqrt(a^2 - r^2) and
 /// K_I = 2 sigma sqrt(a / pi) all along the front (test/unit/test_penny_field.cpp checks each).
+///
+/// With a remote shear traction `shear` (tau, a vector in the disc's plane: the remote stress is
+/// sigma n n^T + n tau^T + tau n^T, a disc inclined to a remote tension) the field adds the uniform
+/// shear strain and the perturbation of the shear-loaded penny crack (Segedin 1950; Kassir & Sih):
+/// its faces slide by the elliptical jump u+ - u- = 16 (1 - nu^2) / (pi (2 - nu) E) sqrt(a^2 - r^2)
+/// tau (the same direction everywhere), and its displacement is Somigliana's integral of that jump
+/// over the disc with Kelvin's point-force stress, u_m(x) = int b_i n_j sigma^(m)_ij(y - x) dS(y),
+/// evaluated by quadrature (Gauss-Legendre in r = a sin t, 32 x 128 points; it gives Sneddon's
+/// normal part to 1e-9 at a distance 0.25 a from the disc: test/unit/test_penny_field.cpp). That part
+/// is available as a displacement only, at points 0.25 a and more from the disc (what Dirichlet
+/// data on a box around the disc need); gradient() throws for it. Stress intensity factors in the
+/// frame a = radial, b = n, c = a x b at the front point at angle phi from tau:
+/// K_II = 4 / (2 - nu) sqrt(a / pi) tau.a (= 4 / (pi (2 - nu)) |tau| sqrt(pi a) cos phi),
+/// K_III = 4 (1 - nu) / (2 - nu) sqrt(a / pi) tau.c (= 4 (1 - nu) / (pi (2 - nu)) |tau| sqrt(pi a)
+/// sin phi; the handbooks' -sin phi is for c along +phi: here c = -e_phi for n = +z).
 struct PennyField {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit; its side is the cut's +1 side
   double radius = 1.0;                                ///< a, metres
   double sigma = 0.0;                                 ///< remote tension normal to the disc, Pa
+  Eigen::Vector3d shear = Eigen::Vector3d::Zero();    ///< remote shear traction on the disc's plane (in it), Pa
   double E = 1.0, nu = 0.3;                           ///< Young's modulus (Pa), Poisson's ratio
 
   /// Displacement at x (metres; rigid motion: none, u(centre) = 0). `side` (+1 / -1) picks the
   /// face for a point in the disc's plane inside the disc (|z| <= 1e-12 a); 0: the +1 face.
+  /// With shear: throws xfem::Error closer than 0.25 a to the disc (the quadrature's limit).
   Eigen::Vector3d displacement(const Eigen::Vector3d& x, int side = 0) const;
   /// du_i/dx_j at x (row i, column j): singular like rho^-1/2 at the front (rho = the distance to
   /// the front circle), returned as 0 within 1e-10 a of it. `side` as for displacement().
+  /// Throws xfem::Error with shear (not available).
   Eigen::Matrix3d gradient(const Eigen::Vector3d& x, int side = 0) const;
   /// The stress sigma_ij = lambda tr(eps) delta_ij + 2 mu eps_ij of gradient(x, side).
   Eigen::Matrix3d stress(const Eigen::Vector3d& x, int side = 0) const;
-  /// K_I = 2 sigma sqrt(a / pi), the same at every front point (K_II = K_III = 0).
+  /// K_I = 2 sigma sqrt(a / pi), the same at every front point (K_II = K_III = 0 without shear).
   double K1() const;
+  /// (K_I, K_II, K_III) at the front point closest to x, in the frame a = radial, b = n, c = a x b.
+  Eigen::Vector3d stress_intensity(const Eigen::Vector3d& x) const;
+  /// Somigliana's integral (above) of a jump b(y) = sqrt(a^2 - r^2) `jump` over the disc at x:
+  /// the displacement of a crack opened (jump along n) or slid (in the plane) elliptically.
+  Eigen::Vector3d elliptical_jump_displacement(const Eigen::Vector3d& x, const Eigen::Vector3d& jump) const;
 
  private:
   void evaluate(const Eigen::Vector3d& x, int side, Eigen::Vector3d* u, Eigen::Matrix3d* grad) const;

@@ -139,7 +139,7 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     check_material(w, W.E, W.nu);
   } else if (n.has("penny")) {
     const Node w = n.at("penny");
-    w.require_object({"centre", "normal", "radius", "sigma", "E", "nu"});
+    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu"});
     f.kind = ExactField::Kind::Penny;
     PennyField& P = f.penny;
     if (w.has("centre")) P.centre = w.at("centre").vector3();
@@ -147,6 +147,11 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     P.radius = w.at("radius").number();
     if (!(P.radius > 0)) w.at("radius").fail("must be positive, got " + short_number(P.radius));
     P.sigma = w.at("sigma").number();
+    if (w.has("shear")) {
+      P.shear = w.at("shear").vector3();
+      if (std::abs(P.shear.dot(P.normal)) > 1e-9 * P.shear.norm())
+        w.at("shear").fail("must lie in the disc's plane (perpendicular to normal)");
+    }
     if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
     P.E = w.has("E") ? w.at("E").number() : material->first;
     P.nu = w.has("nu") ? w.at("nu").number() : material->second;

@@ -30,16 +30,50 @@ namespace xfem {
 ///   I_1 = 2 (1 - nu^2) / E K_I,   I_2 = 2 (1 - nu^2) / E K_II,   I_3 = K_III / mu,
 ///   G = (1 - nu^2) / E (K_I^2 + K_II^2) + K_III^2 / (2 mu).
 /// Exact for a straight front in a homogeneous body with traction-free cut faces when the
-/// integrals are exact and the domain stays inside the body (q = 0 on the outer boundary, apart
-/// from free faces the front meets at right angles). On a curved front the auxiliary fields of
-/// the straight tangent line are not exactly compatible; the error falls with R / (radius of
-/// curvature). Signs follow the frame: K_I > 0 opens the cut; K_II, K_III change sign with the
-/// cut's normal.
+/// integrals are exact and the domain stays inside the body (q = 0 on the outer boundary), apart
+/// from the ends of an open front, where the domain meets the body's surface: there the surface
+/// term + int q [sigma:eps^aux (a.n) - (sigma n).(H a) - (sigma^aux n).(grad u a)] dS over the
+/// surface faces with q > 0 is added (FrontSifOptions::surface_term). Signs follow the frame: K_I > 0 opens the
+/// cut; K_II, K_III change sign with the cut's normal.
+///
+/// Curved front (FrontAuxiliary::Curvilinear, the default; Gosz, Dolbow & Moran 1998, Gosz & Moran
+/// 2002, Walters, Paulino & Dodds 2005): the Williams fields of the straight tangent line at P
+/// put their own crack on the tangent half-plane, which cuts through intact material where the
+/// front curves away, and their singular line leaves the front: on a penny-shaped crack K_I comes
+/// out 1-4 % high, growing with the hat's width. Instead the front near P is modelled by its
+/// osculating circle in the cut's plane at P (curvature kappa, from the turn of the tangent over
+/// the hat, signed so that c' = -kappa a; 0 for a straight front), and every point x takes its
+/// own toroidal coordinates around it: the foot P(x) on the circle, the frame (a, b, c)(x) there,
+/// xa = a(x).(x - P(x)), xb = b.(x - P(x)), h = 1 + kappa xa (grad s = c / h). The auxiliary gradient
+/// H is the 2D Williams gradient in that frame (H c = 0), eps^aux = sym H, sigma^aux = C eps^aux:
+/// traction-free on the cut's faces and singular on the front, but neither compatible (H is not
+/// a gradient) nor in equilibrium (div sigma^aux != 0). With the virtual crack advance
+/// q_k = q a_k(x) the divergence theorem gives, exactly (P_kj = sigma:eps^aux delta_kj - sigma_ij H_ik
+/// - sigma^aux_ij u_i,k):
+///   I Q = -int P_kj a_k q_,j dV - int q (kappa / h) P_cc dV                   (grad a = kappa c c^T / h)
+///         + int q (kappa / h) (H_aa sigma_cc - H_ca sigma_ac) dV              (incompatibility)
+///         + int q (kappa / h) [(sigma^aux_aa - sigma^aux_cc) u_a,a + sigma^aux_ab u_b,a
+///                               + 2 sigma^aux_ac u_c,a] dV                     (non-equilibrium)
+///         - int q body_i H_ik a_k dV,
+/// components in the frame at x (u_b,a = b . grad u a). The singular parts of the last two cancel
+/// analytically (2D compatibility and equilibrium of the Williams fields): what is left is
+/// O(kappa r^-1), integrable. On a straight front kappa = 0 and this is the form above.
+enum class FrontAuxiliary {
+  Curvilinear,             ///< toroidal Williams fields with the curvature terms (default)
+  CurvilinearUncorrected,  ///< the same fields without the incompatibility and non-equilibrium terms (for studies)
+  Tangent,                 ///< the Williams fields of the straight tangent line at P (before issue 15's fix)
+};
+
 struct FrontSifOptions {
   double radius = 0.0;   ///< R, metres; 0: 2.5 x the mean edge length of the partially cut tets
   double plateau = 0.4;  ///< fraction of R where q_radial = 1 (0 <= plateau < 1)
   double spacing = 0.0;  ///< distance between front points and hat half-width, metres; 0: R
   int order = 4;         ///< Gauss points per direction of the conforming rule (conforming_quadrature.h)
+  FrontAuxiliary auxiliary = FrontAuxiliary::Curvilinear;
+  /// At an end of an open chain (on the body's surface) add the domain form's surface term over the
+  /// body's faces where q > 0 (on a free face: -q (sigma^aux n).(grad u a), the plane-strain auxiliary
+  /// field not being traction-free there); false: leave it out (before issue 15's second session).
+  bool surface_term = true;
 };
 
 /// One evaluation point on the front.
@@ -50,6 +84,7 @@ struct FrontSif {
   double K1 = 0.0, K2 = 0.0, K3 = 0.0;  ///< Pa sqrt(m)
   double G = 0.0;        ///< energy release rate from the K's, J/m^2
   double q_trace = 0.0;  ///< Q, metres
+  double curvature = 0.0;  ///< kappa of the front at the point, 1/m (c' = -kappa a: > 0 where the front bulges ahead)
   int tets = 0;          ///< tets integrated (those where q varies)
   bool end = false;      ///< an end of an open chain (on the body's surface): plane strain does not hold there
   /// The domain reaches the body's surface away from the front's ends: the domain form then
@@ -68,6 +103,14 @@ double default_domain_radius(const EnrichedMesh& em);
 /// fractions 0..1. Throws xfem::Error for a wrong-sized u, an empty front, a bad option.
 std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen::VectorXd& u, double E, double nu,
                                              const Eigen::Vector3d& body, const FrontSifOptions& options,
+                                             const std::function<void(double)>& progress = {});
+
+/// The same for a displacement gradient given as a function (row i, column j: du_i/dx_j at a
+/// point x of tet t on `side` of the cut): an exact field fed in directly (tests), or the X-FEM
+/// solution (the overload above passes displacement_gradient_at).
+using DisplacementGradient = std::function<Eigen::Matrix3d(int t, const Eigen::Vector3d& x, int side)>;
+std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const DisplacementGradient& grad_u, double E,
+                                             double nu, const Eigen::Vector3d& body, const FrontSifOptions& options,
                                              const std::function<void(double)>& progress = {});
 
 /// Writes the points as a VTK XML polydata (one polyline per chain, point arrays K_I, K_II, K_III

@@ -26,4 +26,17 @@ printf '{"penny": {"normal": [0, 0, 1], "radius": -0.3, "sigma": 1, "E": 1, "nu"
 [ $? -ne 0 ] || fail "a negative radius must fail"
 grep -q "^xfem-rmserror: error: .*radius must be positive" "$XFEM_SCRATCH/err" || fail "message: $(cat "$XFEM_SCRATCH/err")"
 [ ! -e "$XFEM_SCRATCH/e.json" ] || fail "output left behind"
+# A penny with shear: shear out of the disc's plane is refused; its field has no gradient, so
+# xfem-rmserror refuses it in one line.
+printf '{"penny": {"normal": [0, 0, 1], "radius": 0.3, "sigma": 1, "shear": [0.5, 0, 0.1], "E": 1, "nu": 0.3}}\n' > "$XFEM_SCRATCH/bad.json"
+"$XFEM_BIN/xfem-rmserror" "$M/enriched.vtu" --cut "$O/penny/cut.vtp" --solution "$M/penny/u.mtx" \
+  --exact "$XFEM_SCRATCH/bad.json" -o "$XFEM_SCRATCH/e.json" >/dev/null 2>"$XFEM_SCRATCH/err"
+[ $? -ne 0 ] || fail "shear out of the disc's plane must fail"
+grep -q "^xfem-rmserror: error: .*shear.*must lie in the disc's plane" "$XFEM_SCRATCH/err" || fail "message: $(cat "$XFEM_SCRATCH/err")"
+"$XFEM_BIN/xfem-rmserror" "$M/enriched.vtu" --cut "$O/penny/cut.vtp" --solution "$M/penny/u.mtx" \
+  --exact "$XFEM_SOURCE/pipelines/verification/data/penny_inclined_exact.json" -o "$XFEM_SCRATCH/e.json" >/dev/null 2>"$XFEM_SCRATCH/err"
+[ $? -ne 0 ] || fail "a penny with shear has no gradient: xfem-rmserror must refuse it"
+[ "$(wc -l < "$XFEM_SCRATCH/err")" -eq 1 ] && grep -q "^xfem-rmserror: error: .*not available" "$XFEM_SCRATCH/err" \
+  || fail "message: $(cat "$XFEM_SCRATCH/err")"
+[ ! -e "$XFEM_SCRATCH/e.json" ] || fail "output left behind"
 rm -rf "$XFEM_SCRATCH"

@@ -197,3 +197,73 @@ TEST_CASE("penny: parsed from an exact-field JSON, bad values refused", "[penny]
   CHECK_THROWS_WITH(parse(R"({"penny": {"normal": [0, 0, 0], "radius": 1, "sigma": 1, "E": 1, "nu": 0.3}})"),
                     Catch::Contains("normal"));
 }
+
+TEST_CASE("penny: Somigliana's integral of Sneddon's opening gives Sneddon's field (the shear part's quadrature)",
+          "[penny]") {
+  // The normal part, a closed form, from the quadrature the shear part uses: the opening
+  // 8 (1 - nu^2) sigma / (pi E) sqrt(a^2 - r^2) n, at points 0.25 a .. 3 a from the disc.
+  const xfem::PennyField f = tilted_penny();
+  const Eigen::Matrix3d eps =
+      f.sigma / f.E * ((1 + f.nu) * f.normal * f.normal.transpose() - f.nu * Eigen::Matrix3d::Identity());
+  const Eigen::Vector3d jump = 8 * (1 - f.nu * f.nu) * f.sigma / (M_PI * f.E) * f.normal;
+  double worst = 0.0, scale = 0.0;
+  for (const auto& [r, z] : std::vector<std::pair<double, double>>{
+           {0.0, 0.26}, {0.5, -0.26}, {1.0, 0.26}, {1.26, 0.0}, {1.3, -0.2}, {2.0, 1.0}, {0.3, 3.0}, {3.0, -0.5}}) {
+    for (double angle : {0.0, 1.0, 4.0}) {
+      const Eigen::Vector3d x = point(f, r * f.radius, angle, z * f.radius);
+      const Eigen::Vector3d exact = f.displacement(x) - eps * (x - f.centre);
+      const Eigen::Vector3d quad = f.elliptical_jump_displacement(x, jump);
+      worst = std::max(worst, (quad - exact).norm());
+      scale = std::max(scale, exact.norm());
+    }
+  }
+  INFO("worst " << worst << " of " << scale);
+  CHECK(worst < 1e-8 * scale);
+  // Closer than 0.25 a it refuses.
+  CHECK_THROWS_WITH(f.elliptical_jump_displacement(point(f, 0.5 * f.radius, 0.0, 0.2 * f.radius), jump),
+                    Catch::Contains("closer than 0.25 radius"));
+}
+
+TEST_CASE("penny: under remote shear an elastic field that tends to the remote shear and K_II and K_III along the front",
+          "[penny]") {
+  xfem::PennyField f = tilted_penny();
+  f.sigma = 0.0;
+  const Eigen::Matrix3d R = disc_frame(f);
+  f.shear = 1.5e3 * (0.6 * R.col(0) + 0.8 * R.col(1));
+  const double mu = f.E / (2 * (1 + f.nu)), lambda = 2 * mu * f.nu / (1 - 2 * f.nu);
+  // Navier's equation (lambda + mu) grad div u + mu lap u = 0 by second differences at points away from the disc.
+  const double h = 1e-3 * f.radius;
+  for (const auto& [r, z] : std::vector<std::pair<double, double>>{{0.2, 0.6}, {1.6, 0.1}, {0.9, -0.8}, {2.5, 2.0}}) {
+    const Eigen::Vector3d x = point(f, r * f.radius, 0.7, z * f.radius);
+    Eigen::Matrix3d H[3];  // H[i](j, k) = d2 u_i / dx_j dx_k
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d ej = h * Eigen::Vector3d::Unit(j), ek = h * Eigen::Vector3d::Unit(k);
+        const Eigen::Vector3d d2 = (f.displacement(x + ej + ek) - f.displacement(x + ej - ek) -
+                                    f.displacement(x - ej + ek) + f.displacement(x - ej - ek)) / (4 * h * h);
+        for (int i = 0; i < 3; ++i) H[i](j, k) = d2[i];
+      }
+    Eigen::Vector3d navier;
+    for (int i = 0; i < 3; ++i) navier[i] = (lambda + mu) * (H[0](i, 0) + H[1](i, 1) + H[2](i, 2)) + mu * H[i].trace();
+    INFO("r " << r << " z " << z << ": " << navier.transpose());
+    CHECK(navier.norm() < 1e-4 * f.shear.norm() / f.radius);
+  }
+  // Far away the perturbation decays like (a / d)^2: the displacement tends to the remote shear strain's.
+  const Eigen::Matrix3d eps = (1 + f.nu) / f.E * (f.shear * f.normal.transpose() + f.normal * f.shear.transpose());
+  for (double d : {10.0, 20.0}) {
+    const Eigen::Vector3d x = point(f, 0.6 * d * f.radius, 2.0, 0.8 * d * f.radius);
+    const double rel = (f.displacement(x) - eps * (x - f.centre)).norm() / (eps * (x - f.centre)).norm();
+    CHECK(rel < 3.0 / (d * d * d));
+  }
+  // The factors: K_II = 4 / (pi (2 - nu)) tau sqrt(pi a) cos phi, K_III = 4 (1 - nu) / (pi (2 - nu)) tau sqrt(pi a)
+  // sin phi (phi from tau, about n; c = a x b = -e_phi), K_I = 0.
+  const double tau = f.shear.norm(), phi0 = std::atan2(0.8, 0.6);
+  for (double phi : {0.0, 0.9, 2.0, 4.5}) {
+    const Eigen::Vector3d K = f.stress_intensity(point(f, 1.0001 * f.radius, phi, 0.0));
+    CHECK_THAT(K[0], Catch::WithinAbs(0.0, 1e-12));
+    CHECK_THAT(K[1], Catch::WithinAbs(4 / (M_PI * (2 - f.nu)) * tau * std::sqrt(M_PI * f.radius) * std::cos(phi - phi0), 1e-9 * tau));
+    CHECK_THAT(K[2], Catch::WithinAbs(4 * (1 - f.nu) / (M_PI * (2 - f.nu)) * tau * std::sqrt(M_PI * f.radius) *
+                                          std::sin(phi - phi0), 1e-9 * tau));
+  }
+  CHECK_THROWS_WITH(f.gradient(point(f, 2 * f.radius, 0, 0)), Catch::Contains("not available"));
+}
