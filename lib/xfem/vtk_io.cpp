@@ -303,6 +303,14 @@ void check_legacy_sections(const std::string& path) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::size_t binary_at = text.find("\nBINARY");
   const char* end = text.data() + text.size();
+  // Point ids are checked against the POINTS count: VTK's legacy reader, which is not built with
+  // the sanitizers, writes out of bounds for an id beyond the points (found by fuzzing).
+  long long point_count = -1;
+  const auto check_id = [&](const std::string& keyword, double id, long long cell) {
+    if (!(id >= 0 && id == std::floor(id) && (point_count < 0 || id < static_cast<double>(point_count))))
+      throw Error(path + ": " + keyword + " section: cell " + std::to_string(cell) + " has point id " + short_number(id) +
+                  ", not one of the " + std::to_string(std::max(point_count, 0LL)) + " points");
+  };
   std::size_t line_start = 0;
   while (line_start < text.size()) {
     std::size_t line_end = text.find('\n', line_start);
@@ -335,10 +343,27 @@ void check_legacy_sections(const std::string& path) {
                     ": too few values for that many cells");
       const long long want = points ? 3 * n : cells ? size : n;
       const long long left = static_cast<long long>(text.size() - data);
+      if (points) point_count = n;
       if (binary_at != std::string::npos && binary_at < line_start) {
         const long long bytes = points ? (type == "double" ? 8 : 4) : 4;
         if (!new_cells && want > left / bytes)
           throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items but the file holds fewer");
+        if (cells && !new_cells) {  // big-endian int32: each cell "k id_1 .. id_k"
+          const auto value = [&](long long i) {
+            const unsigned char* b = reinterpret_cast<const unsigned char*>(text.data() + data + 4 * i);
+            return static_cast<std::int32_t>((std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) |
+                                             (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
+          };
+          long long i = 0, cell = 0;
+          while (i < want) {
+            const std::int32_t k = value(i);
+            if (k < 1 || k > 1000 || ++cell > n || i + 1 + k > want)
+              throw Error(path + ": " + keyword + " section: cell " + std::to_string(cell) +
+                          " has an impossible point count or there are more cells than " + std::to_string(n));
+            for (std::int32_t j = 1; j <= k; ++j) check_id(keyword, value(i + j), cell);
+            i += 1 + k;
+          }
+        }
       } else if (!new_cells) {
         long long numbers = 0;  // ASCII: count the numbers up to the next keyword
         long long next_cell = 0, cells_seen = 0;  // cell sections: each cell is "k id_1 .. id_k"
@@ -363,6 +388,8 @@ void check_legacy_sections(const std::string& path) {
               throw Error(path + ": " + keyword + " section: cell " + std::to_string(cells_seen) +
                           " has an impossible point count or there are more cells than " + std::to_string(n));
             next_cell = numbers + 1 + static_cast<long long>(k);
+          } else if (cells) {
+            check_id(keyword, std::strtod(word.c_str(), nullptr), cells_seen);
           }
           ++numbers;
         }

@@ -2,6 +2,8 @@
 // Readers against hostile files: each bad input is one xfem::Error naming the file and the
 // problem, raised before any large allocation; never a crash, another exception or a hang.
 #include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -107,6 +109,38 @@ TEST_CASE("hostile: legacy VTK with fewer points than POINTS claims is refused",
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("phantom.vtk", head + "POINTS 104 double\n0 0 0 1 0 0 0 1 0 0 0 1\n" + cells)),
                     Catch::Contains("phantom.vtk: POINTS claims 104 points but only 12 coordinates follow"));
   CHECK(xfem::read_tet_mesh(scratch("fine.vtk", head + "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n" + cells)).tets.rows() == 1);
+}
+
+TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, ASCII and binary", "[hostile]") {
+  // VTK's legacy reader (not built with the sanitizers) wrote out of bounds for such ids (fuzzing).
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n";
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("id9.vtk", head + "CELLS 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("id9.vtk: CELLS section: cell 1 has point id 9, not one of the 4 points"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("idneg.vtk", head + "CELLS 1 5\n4 0 1 -2 3\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("has point id -2"));
+  // The same in a binary file: big-endian int32 counts and ids, big-endian doubles.
+  const auto be32 = [](std::int32_t v) {
+    std::string b(4, '\0');
+    for (int i = 0; i < 4; ++i) b[i] = static_cast<char>((static_cast<std::uint32_t>(v) >> (24 - 8 * i)) & 0xff);
+    return b;
+  };
+  const auto be64 = [](double d) {
+    std::uint64_t u;
+    std::memcpy(&u, &d, 8);
+    std::string b(8, '\0');
+    for (int i = 0; i < 8; ++i) b[i] = static_cast<char>((u >> (56 - 8 * i)) & 0xff);
+    return b;
+  };
+  const auto binary = [&](std::int32_t last) {
+    std::string t = "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n";
+    for (double c : {0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.}) t += be64(c);
+    t += "\nCELLS 1 5\n";
+    for (std::int32_t v : {4, 0, 1, 2, last}) t += be32(v);
+    return t + "\nCELL_TYPES 1\n" + be32(10) + "\n";
+  };
+  CHECK(xfem::read_tet_mesh(scratch("fine_binary.vtk", binary(3))).tets.rows() == 1);
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("id7_binary.vtk", binary(7))),
+                    Catch::Contains("id7_binary.vtk: CELLS section: cell 1 has point id 7, not one of the 4 points"));
 }
 
 TEST_CASE("hostile: an OFF header claiming 2e9 faces is refused before allocating", "[hostile]") {
