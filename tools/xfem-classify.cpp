@@ -50,15 +50,15 @@ int main(int argc, char** argv) {
     std::vector<xfem::TriangleMesh> meshes = xfem::read_cuts(cut_paths, cut_names, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
     const std::string cut_path = cut_names.empty() ? std::string() : cut_names[0];
+    xfem::ClassifyOptions options;
+    options.tip_radius = tip_radius;
+    options.tiny_support = tiny_support;
+    options.progress = xfem::cli::progress("classifying");
     if (meshes.size() > 1) {  // several cuts (docs/FORMATS.md "Several cuts")
       std::vector<xfem::CutSurface> surfaces;
       for (auto& m : meshes) surfaces.emplace_back(m);
       std::vector<const xfem::CutSurface*> cuts;
       for (const auto& c : surfaces) cuts.push_back(&c);
-      xfem::ClassifyOptions options;
-      options.tip_radius = tip_radius;
-      options.tiny_support = tiny_support;
-      options.progress = xfem::cli::progress("classifying");
       const xfem::CutsClassification c = [&] {
         try {
           return xfem::classify_cuts(mesh, cuts, options);
@@ -111,10 +111,6 @@ int main(int argc, char** argv) {
     if (!meshes.empty()) cut = std::make_unique<xfem::CutSurface>(std::move(meshes[0]));
 
     const double start = xfem::cli::now();
-    xfem::ClassifyOptions options;
-    options.tip_radius = tip_radius;
-    options.tiny_support = tiny_support;
-    options.progress = xfem::cli::progress("classifying");
     const xfem::Classification c = [&] {
       try {
         return cut ? xfem::classify(mesh, *cut, options) : xfem::classify_without_cut(mesh);

@@ -6,25 +6,9 @@
 #include <numeric>
 
 #include "xfem/error.h"
+#include "xfem/union_find.h"
 
 namespace xfem {
-namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void join(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest id: stable order
-  }
-};
-
-}  // namespace
 
 std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& node_constrained) {
   const int nt = m.tets(), nv = static_cast<int>(m.mesh.points.rows());

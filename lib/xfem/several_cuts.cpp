@@ -13,6 +13,7 @@
 #include "xfem/branch_functions.h"
 #include "xfem/cut_pieces.h"
 #include "xfem/error.h"
+#include "xfem/union_find.h"
 #include "xfem/fingerprint.h"
 #include "xfem/vtk_io.h"
 
@@ -907,20 +908,6 @@ bool same_region(PartKey a, PartKey b, int cuts) {
     if (a % 4 != kAny && b % 4 != kAny && a % 4 != b % 4) return false;
   return true;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void join(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 }  // namespace
 

@@ -306,10 +306,10 @@ void check_legacy_sections(const std::string& path) {
   // Point ids are checked against the POINTS count: VTK's legacy reader, which is not built with
   // the sanitizers, writes out of bounds for an id beyond the points (found by fuzzing).
   long long point_count = -1;
-  const auto check_id = [&](const std::string& keyword, double id, long long cell) {
+  const auto check_id = [&](double id, long long cell) {  // cell: 1-based count of the section's cells
     if (!(id >= 0 && id == std::floor(id) && (point_count < 0 || id < static_cast<double>(point_count))))
-      throw Error(path + ": " + keyword + " section: cell " + std::to_string(cell) + " has point id " + short_number(id) +
-                  ", not one of the " + std::to_string(std::max(point_count, 0LL)) + " points");
+      throw Error(path + ": cell " + std::to_string(cell - 1) + " uses point " + short_number(id) + ", out of range [0, " +
+                  std::to_string(std::max(point_count, 0LL)) + ")");
   };
   std::size_t line_start = 0;
   while (line_start < text.size()) {
@@ -360,7 +360,7 @@ void check_legacy_sections(const std::string& path) {
             if (k < 1 || k > 1000 || ++cell > n || i + 1 + k > want)
               throw Error(path + ": " + keyword + " section: cell " + std::to_string(cell) +
                           " has an impossible point count or there are more cells than " + std::to_string(n));
-            for (std::int32_t j = 1; j <= k; ++j) check_id(keyword, value(i + j), cell);
+            for (std::int32_t j = 1; j <= k; ++j) check_id(value(i + j), cell);
             i += 1 + k;
           }
         }
@@ -389,7 +389,7 @@ void check_legacy_sections(const std::string& path) {
                           " has an impossible point count or there are more cells than " + std::to_string(n));
             next_cell = numbers + 1 + static_cast<long long>(k);
           } else if (cells) {
-            check_id(keyword, std::strtod(word.c_str(), nullptr), cells_seen);
+            check_id(std::strtod(word.c_str(), nullptr), cells_seen);
           }
           ++numbers;
         }

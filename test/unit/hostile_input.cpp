@@ -115,9 +115,9 @@ TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, A
   // VTK's legacy reader (not built with the sanitizers) wrote out of bounds for such ids (fuzzing).
   const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n";
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("id9.vtk", head + "CELLS 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n")),
-                    Catch::Contains("id9.vtk: CELLS section: cell 1 has point id 9, not one of the 4 points"));
+                    Catch::Contains("id9.vtk: cell 0 uses point 9, out of range [0, 4)"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("idneg.vtk", head + "CELLS 1 5\n4 0 1 -2 3\nCELL_TYPES 1\n10\n")),
-                    Catch::Contains("has point id -2"));
+                    Catch::Contains("cell 0 uses point -2, out of range [0, 4)"));
   // The same in a binary file: big-endian int32 counts and ids, big-endian doubles.
   const auto be32 = [](std::int32_t v) {
     std::string b(4, '\0');
@@ -140,7 +140,7 @@ TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, A
   };
   CHECK(xfem::read_tet_mesh(scratch("fine_binary.vtk", binary(3))).tets.rows() == 1);
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("id7_binary.vtk", binary(7))),
-                    Catch::Contains("id7_binary.vtk: CELLS section: cell 1 has point id 7, not one of the 4 points"));
+                    Catch::Contains("id7_binary.vtk: cell 0 uses point 7, out of range [0, 4)"));
 }
 
 TEST_CASE("hostile: an OFF header claiming 2e9 faces is refused before allocating", "[hostile]") {
