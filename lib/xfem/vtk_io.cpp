@@ -315,16 +315,20 @@ void check_legacy_sections(const std::string& path) {
   while (line_start < text.size()) {
     std::size_t line_end = text.find('\n', line_start);
     if (line_end == std::string::npos) line_end = text.size();
-    if (!std::isupper(static_cast<unsigned char>(text[line_start]))) {  // fast path: data lines
+    if (!std::isalpha(static_cast<unsigned char>(text[line_start]))) {  // fast path: data lines
       line_start = line_end + 1;
       continue;
     }
     std::istringstream header(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200)));
     std::string keyword;
     header >> keyword;
-    const bool points = keyword == "POINTS", types = keyword == "CELL_TYPES";
-    const bool cells = keyword == "CELLS" || keyword == "POLYGONS" || keyword == "LINES" || keyword == "VERTICES" ||
-                       keyword == "TRIANGLE_STRIPS";
+    // Keywords as VTK's reader takes them: in any case, by their first letters (it reads "CELLS2"
+    // as CELLS, then the next numbers as the counts, and wrote past its arrays on such a file).
+    std::string lower = keyword;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const auto is = [&](const std::string& k) { return lower.compare(0, k.size(), k) == 0; };
+    const bool points = is("points"), types = is("cell_types");
+    const bool cells = !types && (is("cells") || is("polygons") || is("lines") || is("vertices") || is("triangle_strips"));
     if (points || types || cells) {
       long long n = -1, size = -1;
       std::string type;

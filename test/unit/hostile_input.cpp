@@ -111,13 +111,18 @@ TEST_CASE("hostile: legacy VTK with fewer points than POINTS claims is refused",
   CHECK(xfem::read_tet_mesh(scratch("fine.vtk", head + "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n" + cells)).tets.rows() == 1);
 }
 
-TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, ASCII and binary", "[hostile]") {
+TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, ASCII and binary", "[hostile][fuzz-regressions]") {
   // VTK's legacy reader (not built with the sanitizers) wrote out of bounds for such ids (fuzzing).
   const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n";
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("id9.vtk", head + "CELLS 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n")),
                     Catch::Contains("id9.vtk: cell 0 uses point 9, out of range [0, 4)"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("idneg.vtk", head + "CELLS 1 5\n4 0 1 -2 3\nCELL_TYPES 1\n10\n")),
                     Catch::Contains("cell 0 uses point -2, out of range [0, 4)"));
+  // Keywords are matched as VTK matches them: any case, by their first letters ("CELLS2" is CELLS).
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("lower.vtk", head + "cells 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("lower.vtk: cell 0 uses point 9, out of range [0, 4)"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("glued.vtk", head + "CELLS1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("glued.vtk: malformed CELLS1 line in the legacy VTK file"));
   // The same in a binary file: big-endian int32 counts and ids, big-endian doubles.
   const auto be32 = [](std::int32_t v) {
     std::string b(4, '\0');
