@@ -29,6 +29,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdint>
@@ -311,32 +312,57 @@ void check_legacy_sections(const std::string& path) {
       throw Error(path + ": cell " + std::to_string(cell - 1) + " uses point " + short_number(id) + ", out of range [0, " +
                   std::to_string(std::max(point_count, 0LL)) + ")");
   };
+  // VTK's legacy reader trusts what it parses (it is not built with the sanitizers, and it wrote
+  // past its arrays or followed null pointers on the files fuzzing made of ours): an ASCII file
+  // must be text, and a line starting with a keyword's letters must be that keyword.
+  if (text.compare(0, 14, "# vtk DataFile") != 0) return;  // not legacy VTK: VTK's reader says so
+  if (binary_at == std::string::npos)
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const unsigned char c = static_cast<unsigned char>(text[i]);
+      if ((c < 0x20 && !std::isspace(c)) || c >= 0x7f)
+        throw Error(path + ": byte " + std::to_string(i) + " is not text, in an ASCII legacy VTK file");
+    }
+  static const char* const kKeywords[] = {"points", "cells", "cell_types", "polygons", "lines", "vertices",
+                                          "triangle_strips", "point_data", "cell_data", "field", "scalars",
+                                          "vectors", "normals", "tensors", "lookup_table", "color_scalars",
+                                          "texture_coordinates", "global_ids", "pedigree_ids", "metadata", "dataset",
+                                          "offsets", "connectivity"};
   std::size_t line_start = 0;
-  while (line_start < text.size()) {
+  for (int line = 0; line_start < text.size(); ++line) {
     std::size_t line_end = text.find('\n', line_start);
     if (line_end == std::string::npos) line_end = text.size();
-    if (!std::isalpha(static_cast<unsigned char>(text[line_start]))) {  // fast path: data lines
+    // Data lines start with a digit or a sign; line 1 is the title (free text).
+    if (line == 1 || !std::isalpha(static_cast<unsigned char>(text[line_start]))) {
       line_start = line_end + 1;
       continue;
     }
-    std::istringstream header(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200)));
+    const std::string head = text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200));
+    std::istringstream header(head);
     std::string keyword;
     header >> keyword;
-    // Keywords as VTK's reader takes them: in any case, by their first letters (it reads "CELLS2"
-    // as CELLS, then the next numbers as the counts, and wrote past its arrays on such a file).
     std::string lower = keyword;
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const auto is = [&](const std::string& k) { return lower.compare(0, k.size(), k) == 0; };
-    const bool points = is("points"), types = is("cell_types");
-    const bool cells = !types && (is("cells") || is("polygons") || is("lines") || is("vertices") || is("triangle_strips"));
+    // VTK compares only a keyword's first letters: "CELLS2 10" is CELLS, and "10" and the next
+    // line's count became its counts.
+    for (const char* k : kKeywords)
+      if (lower.compare(0, std::strlen(k), k) == 0 && lower != k)
+        throw Error(path + ": unknown keyword '" + keyword.substr(0, 40) + "' in the legacy VTK file (did you mean '" +
+                    std::string(k) + "'?)");
+    const bool points = lower == "points", types = lower == "cell_types";
+    const bool cells = lower == "cells" || lower == "polygons" || lower == "lines" || lower == "vertices" ||
+                       lower == "triangle_strips";
     if (points || types || cells) {
-      long long n = -1, size = -1;
-      std::string type;
-      header >> n;
-      if (cells) header >> size;
-      if (points) header >> type;
-      if (!header || n < 0 || (cells && size < 0))
-        throw Error(path + ": malformed " + keyword + " line in the legacy VTK file");
+      // The counts as whole numbers, nothing after them but the points' type.
+      std::vector<std::string> words;
+      for (std::string w; header >> w;) words.push_back(w);
+      const std::size_t counts = cells ? 2 : 1;
+      bool ok = words.size() == counts + (points ? 1 : 0);
+      for (std::size_t i = 0; ok && i < counts; ++i)
+        ok = !words[i].empty() && words[i].size() <= 18 &&
+             std::all_of(words[i].begin(), words[i].end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!ok) throw Error(path + ": malformed " + keyword + " line in the legacy VTK file");
+      const long long n = std::stoll(words[0]), size = cells ? std::stoll(words[1]) : -1;
+      const std::string type = points ? words[1] : std::string();
       if (n > static_cast<long long>(text.size()) || size > static_cast<long long>(text.size()))
         throw Error(path + ": " + keyword + " claims " + std::to_string(n) + " items, more than the file can hold");
       const std::size_t data = std::min(line_end + 1, text.size());

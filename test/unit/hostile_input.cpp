@@ -118,11 +118,15 @@ TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, A
                     Catch::Contains("id9.vtk: cell 0 uses point 9, out of range [0, 4)"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("idneg.vtk", head + "CELLS 1 5\n4 0 1 -2 3\nCELL_TYPES 1\n10\n")),
                     Catch::Contains("cell 0 uses point -2, out of range [0, 4)"));
-  // Keywords are matched as VTK matches them: any case, by their first letters ("CELLS2" is CELLS).
+  // VTK matches keywords in any case and by their first letters only ("CELLS1" would be CELLS).
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("lower.vtk", head + "cells 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n")),
                     Catch::Contains("lower.vtk: cell 0 uses point 9, out of range [0, 4)"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("glued.vtk", head + "CELLS1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n")),
-                    Catch::Contains("glued.vtk: malformed CELLS1 line in the legacy VTK file"));
+                    Catch::Contains("glued.vtk: unknown keyword 'CELLS1' in the legacy VTK file (did you mean 'cells'?)"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("field.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\nfieldPOINT_DATA 4\n")),
+                    Catch::Contains("field.vtk: unknown keyword 'fieldPOINT_DATA'"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("bytes.vtk", head + "CELLS 1 5\x87\n4 0 1 2 3\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("bytes.vtk: byte 110 is not text, in an ASCII legacy VTK file"));
   // The same in a binary file: big-endian int32 counts and ids, big-endian doubles.
   const auto be32 = [](std::int32_t v) {
     std::string b(4, '\0');
