@@ -319,7 +319,10 @@ void check_legacy_sections(const std::string& path) {
   if (binary_at == std::string::npos)
     for (std::size_t i = 0; i < text.size(); ++i) {
       const unsigned char c = static_cast<unsigned char>(text[i]);
-      if ((c < 0x20 && !std::isspace(c)) || c >= 0x7f)
+      // Lines are what this check reads and whitespace what VTK reads: a vertical tab, a form feed
+      // or a lone carriage return would let a keyword hide inside a line.
+      const bool lone_cr = c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n');
+      if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c >= 0x7f || lone_cr)
         throw Error(path + ": byte " + std::to_string(i) + " is not text, in an ASCII legacy VTK file");
     }
   static const char* const kKeywords[] = {"points", "cells", "cell_types", "polygons", "lines", "vertices",
@@ -351,10 +354,26 @@ void check_legacy_sections(const std::string& path) {
     const bool points = lower == "points", types = lower == "cell_types";
     const bool cells = lower == "cells" || lower == "polygons" || lower == "lines" || lower == "vertices" ||
                        lower == "triangle_strips";
+    std::vector<std::string> words;
+    for (std::string w; header >> w;) words.push_back(w);
+    for (std::string w : words) {  // one keyword per line: VTK would take one that follows
+      for (char& c : w) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      for (const char* k : {"points", "cells", "cell_types", "polygons", "lines", "vertices", "triangle_strips",
+                            "point_data", "cell_data"})
+        if (w.compare(0, std::strlen(k), k) == 0)
+          throw Error(path + ": a second keyword in the line of " + keyword + " in the legacy VTK file");
+    }
+    if (points && words.size() == 2) {
+      static const char* const kTypes[] = {"bit", "unsigned_char", "char", "unsigned_short", "short", "unsigned_int",
+                                           "int", "unsigned_long", "long", "float", "double", "vtkidtype",
+                                           "vtktypeint64", "vtktypeuint64"};
+      std::string t = words[1];
+      for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (std::none_of(std::begin(kTypes), std::end(kTypes), [&](const char* k) { return t == k; }))
+        throw Error(path + ": POINTS of unknown type '" + words[1].substr(0, 20) + "' in the legacy VTK file");
+    }
     if (points || types || cells) {
       // The counts as whole numbers, nothing after them but the points' type.
-      std::vector<std::string> words;
-      for (std::string w; header >> w;) words.push_back(w);
       const std::size_t counts = cells ? 2 : 1;
       bool ok = words.size() == counts + (points ? 1 : 0);
       for (std::size_t i = 0; ok && i < counts; ++i)
@@ -411,6 +430,10 @@ void check_legacy_sections(const std::string& path) {
             for (char& c : shown)  // one printable line
               if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
             throw Error(path + ": " + keyword + " section: '" + shown + "' is not a number");
+          }
+          if ((cells || types) && !std::all_of(word.begin(), word.end(), [](char c) { return (c >= '0' && c <= '9') || c == '-' || c == '+'; })) {
+            std::string shown = word.substr(0, 20);
+            throw Error(path + ": " + keyword + " section: '" + shown + "' is not a whole number");
           }
           if (cells && numbers == next_cell) {  // a cell's point count
             const double k = std::strtod(word.c_str(), nullptr);

@@ -127,6 +127,10 @@ TEST_CASE("hostile: legacy VTK cells naming a point beyond POINTS are refused, A
                     Catch::Contains("field.vtk: unknown keyword 'fieldPOINT_DATA'"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("bytes.vtk", head + "CELLS 1 5\x87\n4 0 1 2 3\nCELL_TYPES 1\n10\n")),
                     Catch::Contains("bytes.vtk: byte 110 is not text, in an ASCII legacy VTK file"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("decimal.vtk", head + "CELLS 1 5\n4 0 1 2.0 3\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("decimal.vtk: CELLS section: '2.0' is not a whole number"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("twokeys.vtk", head + "CELLS 1 5 CELL_TYPES\n4 0 1 2 3\nCELL_TYPES 1\n10\n")),
+                    Catch::Contains("twokeys.vtk: a second keyword in the line of CELLS"));
   // The same in a binary file: big-endian int32 counts and ids, big-endian doubles.
   const auto be32 = [](std::int32_t v) {
     std::string b(4, '\0');
