@@ -777,15 +777,25 @@ void check_stl(const std::string& path) {
 TriangleMesh from_polydata(vtkPolyData* poly, const std::string& name) {
   TriangleMesh mesh;
   mesh.points = to_points(poly->GetPoints());
-  const vtkIdType nc = poly->GetNumberOfCells();
   const vtkIdType np = poly->GetNumberOfPoints();
-  mesh.triangles.resize(nc, 3);
+  // The polygons read straight from their cell array: vtkPolyData's cell map (GetCellType) is
+  // built from all four arrays and was a null pointer on a damaged file (found by fuzzing).
+  vtkCellArray* polys = poly->GetPolys();
+  const vtkIdType nc = polys ? polys->GetNumberOfCells() : 0;
+  mesh.triangles.resize(std::max<vtkIdType>(nc, 1), 3);  // row 0 for the error below
+  // Cells are numbered vertices first, then lines, polygons, strips: the first that is no polygon.
+  const vtkIdType verts = poly->GetNumberOfVerts(), lines = poly->GetNumberOfLines();
+  if (verts > 0 || lines > 0 || poly->GetNumberOfStrips() > 0)
+    copy_cell(verts > 0 ? VTK_VERTEX : lines > 0 ? VTK_LINE : VTK_TRIANGLE_STRIP, 0, nullptr, verts + lines > 0 ? 0 : nc,
+              VTK_TRIANGLE, "triangles", np, name, mesh.triangles.row(0));
   for (vtkIdType i = 0; i < nc; ++i) {
     vtkIdType npts;
     const vtkIdType* ids;
-    poly->GetCellPoints(i, npts, ids);
-    copy_cell(poly->GetCellType(i), npts, ids, i, VTK_TRIANGLE, "triangles", np, name, mesh.triangles.row(i));
+    polys->GetCellAtId(i, npts, ids);
+    copy_cell(npts == 3 ? VTK_TRIANGLE : VTK_POLYGON, npts, ids, i, VTK_TRIANGLE, "triangles", np, name,
+              mesh.triangles.row(i));
   }
+  mesh.triangles.conservativeResize(nc, 3);
   mesh.point_data = to_arrays(poly->GetPointData());
   mesh.cell_data = to_arrays(poly->GetCellData());
   return mesh;
