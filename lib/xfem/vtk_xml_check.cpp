@@ -168,6 +168,9 @@ class Checker {
     if (blocks > room / h) throw corrupt("a compressed array claims more blocks than the file holds");
     if ((blocks > 0 && block == 0) || block > (1ULL << 31) || last > block)  // VTK allocates `block` even for 0 blocks
       throw corrupt("a compressed array has an impossible block size");
+    // No blocks but a partial last block: VTK takes the array's size as (blocks - 1) x block +
+    // last, wraps around, and reads block sizes that are not there (a crash found by fuzzing).
+    if (blocks == 0 && last != 0) throw corrupt("a compressed array has no blocks but a last block of " + std::to_string(last) + " bytes");
     u64 total = 0;
     for (u64 b = 0; b < blocks; ++b) {
       u64 s = 0;
