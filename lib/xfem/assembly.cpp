@@ -14,13 +14,10 @@
 #include "xfem/error.h"
 #include "xfem/pieces.h"
 #include "xfem/tet_shape.h"
+#include "xfem/seconds_since.h"
 
 namespace xfem {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The lower triangle of K at the level of 3-vectors: for DOF column b the rows a >= b of every DOF
 // sharing a tet with b (rows[start[b]] == b), and for each tet a |C| x |C| table giving, for entry

@@ -8,12 +8,10 @@
 #include <cmath>
 #include <memory>
 
+#include "xfem/seconds_since.h"
+
 namespace xfem {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Below this many floating-point operations (~0.1-0.2 s on one core) the factorization runs its BLAS
 // on one thread: OpenBLAS's worker threads then cost more in waking and waiting than they save,

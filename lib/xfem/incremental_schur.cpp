@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "xfem/error.h"
+#include "xfem/seconds_since.h"
 
 // LAPACK / BLAS (OpenBLAS behind CHOLMOD): the bordered Cholesky update is O(p^2 k) for p kept
 // and k new rows, which wants an optimised triangular solve.
@@ -18,14 +19,6 @@ void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* inf
 }
 
 namespace xfem {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
 void IncrementalSchur::extend_region(const std::vector<int>& free_dofs, const std::function<void(double)>& progress,
                                      int block) {
   const long nf = A_.size();

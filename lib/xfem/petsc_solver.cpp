@@ -5,6 +5,7 @@
 
 #include "xfem/error.h"
 #include "xfem/petsc_binary.h"
+#include "xfem/seconds_since.h"
 
 #if XFEM_HAVE_PETSC
 #include <petscksp.h>
@@ -21,10 +22,6 @@ namespace {
 
 void check(PetscErrorCode code, const char* what) {
   if (code != 0) throw Error(std::string("PETSc: ") + what + " failed (PETSc error " + std::to_string(code) + ")");
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Owned PETSc objects, destroyed on every path.

@@ -14,16 +14,9 @@
 #include "xfem/error.h"
 #include "xfem/oversampling_quadrature.h"
 #include "xfem/pieces.h"
+#include "xfem/seconds_since.h"
 
 namespace xfem {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
 EnrichedMesh enriched_mesh(const TetMesh& mesh, const Classification& c, std::shared_ptr<const CutSurface> cut) {
   std::vector<int> enrichment(c.enrichment.size()), cut_class(c.cut_class.size());
   for (std::size_t k = 0; k < enrichment.size(); ++k) enrichment[k] = static_cast<int>(c.enrichment[k]);

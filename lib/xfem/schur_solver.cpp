@@ -6,16 +6,9 @@
 #include <cmath>
 
 #include "xfem/error.h"
+#include "xfem/seconds_since.h"
 
 namespace xfem {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
 Eigen::VectorXd schur_solve(const CholeskyFactor& A, const Eigen::VectorXd& w_s, const SparseMatrix& K_se,
                             const SparseMatrix& K_ee, const Eigen::VectorXd& g_e, SchurStats* stats, int block) {
   const long ns = A.size(), ne = K_ee.rows();
