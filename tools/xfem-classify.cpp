@@ -50,6 +50,16 @@ int main(int argc, char** argv) {
     std::vector<xfem::TriangleMesh> meshes = xfem::read_cuts(cut_paths, cut_names, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
     const std::string cut_path = cut_names.empty() ? std::string() : cut_names[0];
+    // What every --summary starts with (`cut`: the path, or the list of paths of several cuts).
+    const auto summary_header = [&](const xfem::Json& cut) {
+      xfem::Json j;
+      j["generator"] = std::string("xfem-classify ") + xfem::version;
+      j["body"] = body;
+      j["cut"] = cut;
+      j["tip_radius"] = tip_radius;
+      j["tiny_support"] = tiny_support;
+      return j;
+    };
     xfem::ClassifyOptions options;
     options.tip_radius = tip_radius;
     options.tiny_support = tiny_support;
@@ -69,12 +79,7 @@ int main(int argc, char** argv) {
       xfem::store_cuts_classification(c, mesh);
       xfem::store_cut_fingerprints(meshes, mesh);
       xfem::write_tet_mesh(mesh, output);
-      xfem::Json j;
-      j["generator"] = std::string("xfem-classify ") + xfem::version;
-      j["body"] = body;
-      j["cut"] = cut_names;
-      j["tip_radius"] = tip_radius;
-      j["tiny_support"] = tiny_support;
+      xfem::Json j = summary_header(cut_names);
       j["cuts"] = xfem::Json::array();
       const auto count_names = xfem::count_names();
       for (std::size_t k = 0; k < c.cuts.size(); ++k) {
@@ -143,12 +148,7 @@ int main(int argc, char** argv) {
                     " sign, " + std::to_string(c.counts.branch) + " branch nodes; " +
                     std::to_string(c.counts.front_segments) + " front segments (" + std::to_string(seconds) + " s)");
     if (!summary.empty()) {
-      xfem::Json j;
-      j["generator"] = std::string("xfem-classify ") + xfem::version;
-      j["body"] = body;
-      j["cut"] = cut_path;
-      j["tip_radius"] = tip_radius;
-      j["tiny_support"] = tiny_support;
+      xfem::Json j = summary_header(cut_path);
       for (std::size_t i = 0; i < names.size(); ++i) j[names[i]] = values[i];
       xfem::write_json(j, summary);
     }

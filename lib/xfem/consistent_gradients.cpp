@@ -205,7 +205,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
   // Barycentric coordinates on the face, for N_v.
   Eigen::Matrix<double, 3, 2> J;
   J << B - A, C - A;
-  const Eigen::Matrix2d JtJ = J.transpose() * J;
+  const Eigen::LDLT<Eigen::Matrix2d> JtJ = (J.transpose() * J).ldlt();  // factored once for all points
   std::array<Eigen::Matrix<double, 3, 4>, 2> integral;
   integral[0].setZero();
   integral[1].setZero();
@@ -229,7 +229,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
     }
     polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const Eigen::Vector2d bc = JtJ.ldlt().solve(J.transpose() * (x[i] - A));
+      const Eigen::Vector2d bc = JtJ.solve(J.transpose() * (x[i] - A));
       const Eigen::Vector3d N(1.0 - bc[0] - bc[1], bc[0], bc[1]);
       const TipCoordinates tc = front.coordinates(x[i]);
       const BranchValues F0 = branch_functions(tc, side[0]);

@@ -729,6 +729,17 @@ int cut_function(const EnrichedMesh& em, int k, const int* sides) {
   return sides[k];
 }
 
+namespace {
+
+// The cut whose branch block holds `dof` (a branch DOF), or -1.
+int branch_cut_of_dof(const EnrichedMesh& em, long dof) {
+  for (std::size_t k = 0; k < em.cuts.size(); ++k)
+    if (dof >= em.cuts[k].branch_first && dof < em.cuts[k].branch_first + 4 * em.cuts[k].nb) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace
+
 void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int code,
                         BasisAt& out) {
   const int K = static_cast<int>(em.cuts.size());
@@ -800,9 +811,8 @@ void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, co
       out.dN.row(e) = psi * shape.grad.row(l);
       continue;
     }
-    int k = 0;
-    while (k < K && !(dof >= em.cuts[k].branch_first && dof < em.cuts[k].branch_first + 4 * em.cuts[k].nb)) ++k;
-    if (k == K) throw Error("tet " + std::to_string(t) + ": DOF " + std::to_string(dof) + " is in no cut's block");
+    const int k = branch_cut_of_dof(em, dof);
+    if (k < 0) throw Error("tet " + std::to_string(t) + ": DOF " + std::to_string(dof) + " is in no cut's block");
     if (k != branch_cut) {
       const CutLayer& c = em.cuts[k];
       const TipCoordinates tc = c.front.coordinates(x);
@@ -825,8 +835,8 @@ int branch_cut_of_tet(const EnrichedMesh& em, int t) {
     const long dof = em.dofs[e];
     if (dof < em.np + em.ns) continue;
     if (em.cuts.empty()) return 0;
-    for (std::size_t k = 0; k < em.cuts.size(); ++k)
-      if (dof >= em.cuts[k].branch_first && dof < em.cuts[k].branch_first + 4 * em.cuts[k].nb) return static_cast<int>(k);
+    const int k = branch_cut_of_dof(em, dof);
+    if (k >= 0) return k;
   }
   return -1;
 }
