@@ -31,33 +31,6 @@ constexpr int kMaxLevels = 8;
 constexpr double kNearFar = 0.5;
 constexpr int kMaxLevelsFar = 8;
 
-double segment_segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& q0,
-                                const Eigen::Vector3d& q1) {
-  double best = std::min({point_segment_distance(p0, q0, q1), point_segment_distance(p1, q0, q1),
-                          point_segment_distance(q0, p0, p1), point_segment_distance(q1, p0, p1)});
-  // The interior minimum, when both closest points fall inside their segments.
-  const Eigen::Vector3d u = p1 - p0, v = q1 - q0, w = p0 - q0;
-  const double a = u.dot(u), b = u.dot(v), c = v.dot(v), d = u.dot(w), e = v.dot(w);
-  const double den = a * c - b * b;
-  if (den > 1e-14 * a * c) {
-    const double s = (b * e - c * d) / den, t = (a * e - b * d) / den;
-    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) best = std::min(best, (w + s * u - t * v).norm());
-  }
-  return best;
-}
-
-double front_distance(const Eigen::Vector3d& x, const CrackFront& front) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& s : front.segments()) best = std::min(best, point_segment_distance(x, s.p0, s.p1));
-  return best;
-}
-
-double front_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const CrackFront& front) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& s : front.segments()) best = std::min(best, segment_segment_distance(p, q, s.p0, s.p1));
-  return best;
-}
-
 }  // namespace
 
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
@@ -160,7 +133,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     for (const auto& e : kEdges) longest = std::max(longest, (p[e[0]] - p[e[1]]).norm());
     int on[4], count = 0;
     for (int m = 0; m < 4; ++m)
-      if (front_distance(p[m], front) <= kOnFront * longest) on[count++] = m;
+      if (front.distance(p[m]) <= kOnFront * longest) on[count++] = m;
     if (count == 1) {
       // Singular at vertex a; nearly singular in the direction of the face opposite it when the
       // front line passes close to that face: split the face's longest edge.
@@ -171,7 +144,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
       int e0 = 0, e1 = 1;
       for (int x = 0; x < 3; ++x) {
         const int u = face[x], v = face[(x + 1) % 3];
-        h = std::min(h, front_distance(p[u], p[v], front));
+        h = std::min(h, front.distance(p[u], p[v]));
         if ((p[u] - p[v]).norm() > edge) {
           edge = (p[u] - p[v]).norm();
           e0 = u;
@@ -185,13 +158,13 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     if (count >= 2) {
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
-      if (may_split && front_distance(p[k], p[l], front) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
+      if (may_split && front.distance(p[k], p[l]) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
       append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], n, side, out);
       return;
     }
     double nearest = std::numeric_limits<double>::infinity();
     for (int e = 0; e < 6; ++e) {
-      const double dist = front_distance(p[kEdges[e][0]], p[kEdges[e][1]], front);
+      const double dist = front.distance(p[kEdges[e][0]], p[kEdges[e][1]]);
       if (dist < nearest) {
         nearest = dist;
         best = e;

@@ -27,7 +27,48 @@ CrackFront::CrackFront(std::vector<FrontSegment> segments) : segments_(std::move
         !s.b.allFinite())
       throw Error("crack front: segment " + std::to_string(i) + " is degenerate (zero length or zero normal)");
   }
-  if (!segments_.empty()) chains_ = std::make_shared<const std::vector<FrontPolyline>>(front_polylines(segments_));
+  if (segments_.empty()) return;
+  chains_ = std::make_shared<const std::vector<FrontPolyline>>(front_polylines(segments_));
+  auto index = std::make_shared<Index>();
+  std::vector<Eigen::Vector3d> p0, p1;
+  for (const FrontSegment& g : segments_) p0.push_back(g.p0), p1.push_back(g.p1);
+  index->by_segment = SegmentTree(p0, p1);
+  p0.clear();
+  p1.clear();
+  for (std::size_t c = 0; c < chains_->size(); ++c) {
+    const FrontPolyline& ch = (*chains_)[c];
+    const int np = static_cast<int>(ch.points.size());
+    for (int i = 0; i < ch.segments(); ++i) {
+      p0.push_back(ch.points[i]);
+      p1.push_back(ch.points[(i + 1) % np]);
+      index->chain_of.push_back(static_cast<int>(c));
+      index->segment_of.push_back(i);
+      index->longest = std::max(index->longest, (p1.back() - p0.back()).norm());
+    }
+  }
+  index->by_chain = SegmentTree(p0, p1);
+  index_ = std::move(index);
+}
+
+double CrackFront::distance(const Eigen::Vector3d& x) const {
+  double best = std::numeric_limits<double>::infinity();
+  if (!index_) return best;
+  double best2 = index_->by_segment.nearest_bound2(x);
+  index_->by_segment.visit_near(x, best2, [&](int k) {
+    best = std::min(best, point_segment_distance(x, segments_[k].p0, segments_[k].p1));
+    best2 = std::min(best2, best * best);
+  });
+  return best;
+}
+
+double CrackFront::distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const {
+  double best2 = std::numeric_limits<double>::infinity(), best = best2;
+  if (!index_) return best;
+  index_->by_segment.visit_near(p, q, best2, [&](int k) {
+    best = std::min(best, segment_segment_distance(p, q, segments_[k].p0, segments_[k].p1));
+    best2 = best * best;
+  });
+  return best;
 }
 
 namespace {
@@ -81,48 +122,60 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
   // polyline, which jumps between the two segments of a corner for the points on its concave
   // side, the normal planes turn continuously with s, so s(x) is continuous (up to the front's
   // radius of curvature). Beyond the ends of an open chain the end point is the foot.
-  // Pass 1: every segment's distance to x (kept for pass 2) and the closest point of the front,
-  // the foot when no normal plane holds x (beyond an open chain's end). Squared distances, no
-  // square roots in the loops: this runs for every integration point of a branch-enriched tet.
-  thread_local std::vector<double> distance2;
-  distance2.clear();
+  // Pass 1: the closest point of the front, the foot when no normal plane holds x (beyond an open
+  // chain's end). Squared distances, no square roots in the scans: this runs for every
+  // integration point of a branch-enriched tet.
+  // Both passes visit only the segments the front's segment tree finds near x, in the order of a
+  // scan over every chain's segments (the same answer as that scan, bit for bit).
+  const Index& index = *index_;
+  const auto segment_distance2 = [&](int k, double& t, double& len2) {
+    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
+    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
+    const Eigen::Vector3d& p0 = ch.points[i];
+    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+    len2 = d.squaredNorm();
+    t = len2 > 0 ? std::clamp((x - p0).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (p0 + t * d - x).squaredNorm();
+  };
+  // The search is bounded from the start by the segment tree's quick upper bound: it then skips at
+  // once what lies farther. The bound only prunes; the choice is the scan's.
+  double bound2 = index.by_chain.nearest_bound2(x);
   double best2 = std::numeric_limits<double>::infinity();
   const FrontPolyline* best = nullptr;
   double s = 0;
   int seg = 0;
   bool inside = false;
-  for (const FrontPolyline& ch : *chains_) {
-    const int m = ch.segments(), np = static_cast<int>(ch.points.size());
-    for (int i = 0; i < m; ++i) {
-      const Eigen::Vector3d& p0 = ch.points[i];
-      const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
-      const double len2 = d.squaredNorm();
-      const double t = len2 > 0 ? std::clamp((x - p0).dot(d) / len2, 0.0, 1.0) : 0.0;
-      const double d2 = (p0 + t * d - x).squaredNorm();
-      distance2.push_back(d2);
-      if (d2 < best2) best2 = d2, best = &ch, s = ch.arc[i] + t * std::sqrt(len2), seg = i;
+  index.by_chain.visit_near(x, bound2, [&](int k) {
+    double t, len2;
+    const double d2 = segment_distance2(k, t, len2);
+    if (d2 < best2) {
+      best = &(*chains_)[index.chain_of[k]];
+      best2 = d2, s = best->arc[index.segment_of[k]] + t * std::sqrt(len2), seg = index.segment_of[k];
+      bound2 = std::min(bound2, d2);
     }
-  }
+  });
   // Pass 2: the feet in normal planes, on the segments near enough to hold one.
   const double d0 = std::sqrt(best2);
   double best_root = std::numeric_limits<double>::infinity();
-  std::size_t k = 0;
-  for (const FrontPolyline& ch : *chains_) {
-    const int m = ch.segments(), np = static_cast<int>(ch.points.size());
-    for (int i = 0; i < m; ++i, ++k) {
-      const Eigen::Vector3d& p0 = ch.points[i];
-      const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
-      const double len = d.norm(), reach = 1.5 * d0 + 1e-12 * len;
-      if (distance2[k] > reach * reach) continue;  // too far to hold the foot
-      const double f = normal_plane_root(ch, i, x);
-      if (f < 0) continue;
-      const double root = ch.arc[i] + f * len, dist = (x - (p0 + f * d)).norm();
-      if (dist < best_root) {
-        best_root = dist, best = &ch, s = root, seg = i;
-        inside = ch.closed || (root > 0 && root < ch.length);
-      }
+  double reach2 = 1.5 * d0 + 1e-12 * index.longest;
+  reach2 *= reach2;
+  index.by_chain.visit_near(x, reach2, [&](int k) {
+    double t, len2;
+    const double d2 = segment_distance2(k, t, len2);
+    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
+    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
+    const Eigen::Vector3d& p0 = ch.points[i];
+    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+    const double len = d.norm(), reach = 1.5 * d0 + 1e-12 * len;
+    if (d2 > reach * reach) return;  // too far to hold the foot
+    const double f = normal_plane_root(ch, i, x);
+    if (f < 0) return;
+    const double root = ch.arc[i] + f * len, dist = (x - (p0 + f * d)).norm();
+    if (dist < best_root) {
+      best_root = dist, best = &ch, s = root, seg = i;
+      inside = ch.closed || (root > 0 && root < ch.length);
     }
-  }
+  });
   const FrontPolyline& ch = *best;
   const int np = static_cast<int>(ch.points.size());
   const Eigen::Vector3d d = ch.points[(seg + 1) % np] - ch.points[seg];
@@ -156,16 +209,17 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
 
 int CrackFront::closest_segment(const Eigen::Vector3d& x) const {
   if (segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
-  // A linear scan: fronts have hundreds of segments, and a strict '<' gives ties to the lowest index.
+  // The segment tree visits in increasing index, and a strict '<' gives ties to the lowest index.
   int best = 0;
-  double best_d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < segments_.size(); ++i) {
+  double best_d = std::numeric_limits<double>::infinity(), bound = index_->by_segment.nearest_bound2(x);
+  index_->by_segment.visit_near(x, bound, [&](int i) {
     const double d = segment_distance_squared(segments_[i], x);
     if (d < best_d) {
       best_d = d;
-      best = static_cast<int>(i);
+      best = i;
+      bound = std::min(bound, d);
     }
-  }
+  });
   return best;
 }
 

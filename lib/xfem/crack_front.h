@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "xfem/mesh.h"
+#include "xfem/segment_tree.h"
 
 namespace xfem {
 
@@ -82,10 +83,22 @@ class CrackFront {
   TipCoordinates coordinates(const Eigen::Vector3d& x) const;
   /// The front's chains (front_polylines), built once.
   const std::vector<FrontPolyline>& chains() const { return *chains_; }
+  /// Distance from x to the front (its nearest segment); +infinity for an empty front.
+  double distance(const Eigen::Vector3d& x) const;
+  /// Distance from the segment pq to the front; +infinity for an empty front.
+  double distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const;
 
  private:
+  // Segment trees (segment_tree.h) over the segments in their order and in the chains' order,
+  // built once with the chains: the searches above visit only the segments near the point.
+  struct Index {
+    SegmentTree by_segment, by_chain;
+    std::vector<int> chain_of, segment_of;  ///< per chain-order segment: its chain and index in it
+    double longest = 0;                     ///< the longest chain segment, metres
+  };
   std::vector<FrontSegment> segments_;
   std::shared_ptr<const std::vector<FrontPolyline>> chains_;
+  std::shared_ptr<const Index> index_;
 };
 
 /// The chains of a front, in the order of their first segment. Throws xfem::Error for an empty

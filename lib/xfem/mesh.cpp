@@ -26,6 +26,21 @@ double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p
   return (x - p - t * d).norm();
 }
 
+double segment_segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& q0,
+                                const Eigen::Vector3d& q1) {
+  double best = std::min({point_segment_distance(p0, q0, q1), point_segment_distance(p1, q0, q1),
+                          point_segment_distance(q0, p0, p1), point_segment_distance(q1, p0, p1)});
+  // The interior minimum, when both closest points fall inside their segments.
+  const Eigen::Vector3d u = p1 - p0, v = q1 - q0, w = p0 - q0;
+  const double a = u.dot(u), b = u.dot(v), c = v.dot(v), d = u.dot(w), e = v.dot(w);
+  const double den = a * c - b * b;
+  if (den > 1e-14 * a * c) {
+    const double s = (b * e - c * d) / den, t = (a * e - b * d) / den;
+    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) best = std::min(best, (w + s * u - t * v).norm());
+  }
+  return best;
+}
+
 const DataArray& require_array(const DataArrays& arrays, const std::string& name, const char* where,
                                int components, std::size_t tuples, const std::string& file,
                                const std::string& stage) {

@@ -51,6 +51,9 @@ double signed_volume(const TetMesh& mesh, int tet);
 
 /// Distance from x to the segment (p, q) (to p when the segment has no length).
 double point_segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q);
+/// Distance between the segments p0p1 and q0q1 (either may be a point).
+double segment_segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& q0,
+                                const Eigen::Vector3d& q1);
 
 /// The array `name` of `arrays`, checked to have `components` components and `tuples` tuples.
 /// Throws xfem::Error "<file>: <where> array '<name>' missing (is this <stage> output?)" or a
