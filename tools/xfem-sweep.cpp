@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",
       "xfem-sweep organ.vtu --cut sweep.vtp --problem problem.json --steps 40 -o frames --report sweep.json");
   std::string body_path, cut_path, problem_path, dir, report_path, ordering = "metis", solver = "incremental",
-              backend = "cholmod";
+              backend = "cholmod", compression = "lz4";
   int steps = 0, width = 1200, height = 900;
   double scale = 1.0;
   bool solutions = false, cuts = false, png = false;
@@ -84,6 +84,11 @@ int main(int argc, char** argv) {
                  "linear solver of the uncut body: cholmod (the only one: the sweep reuses one Cholesky factorization "
                  "for every step; petsc is refused, see docs/PERFORMANCE.md)")
       ->check(CLI::IsMember({"cholmod", "petsc"}));
+  app.add_option("--compression", compression,
+                 "compression of the frames' VTK XML files: lz4 (default: VTK's LZ4 compressor, written ~9x faster "
+                 "than zlib for files ~1.25x larger; ParaView >= 5.5 and every xfem tool read it), zlib (level 1, as "
+                 "the other tools write: for readers without LZ4) or none (docs/FORMATS.md, \"Conventions\")")
+      ->check(CLI::IsMember({"lz4", "zlib", "none"}));
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
@@ -205,10 +210,14 @@ int main(int argc, char** argv) {
       const double write_start = xfem::cli::now();
       const xfem::EnrichedMesh& em = step.em;
       const xfem::DeformedBody frame = make_frame(step);
+      const double built = xfem::cli::now() - write_start;
       const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
       const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
-      xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string());
-      xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string());
+      const xfem::Compression packing = compression == "lz4"    ? xfem::Compression::LZ4
+                                        : compression == "none" ? xfem::Compression::None
+                                                                : xfem::Compression::ZLib;
+      xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string(), packing);
+      xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string(), packing);
       const double framed = xfem::cli::now() - write_start;  // what xfem-visualize does
       if (solutions) {  // with the fingerprints xfem-solve writes, so xfem-visualize/-rmserror can check a frame's inputs
         xfem::Provenance made_for{{"enriched", body_fingerprint}, {"problem", problem_fingerprint}};
@@ -261,6 +270,9 @@ int main(int argc, char** argv) {
                                  {"solve_seconds", step.solve_seconds},
                                  {"seconds", solved},
                                  {"frame_seconds", framed},
+                                 {"frame_build_seconds", built},
+                                 {"schur_columns_seconds", step.incremental.columns_seconds},
+                                 {"schur_factor_seconds", step.incremental.factor_seconds},
                                  {"picture_seconds", pictured},
                                  {"write_seconds", written}});
       if (step.unsupported_dofs > 0)

@@ -505,16 +505,24 @@ Ptr<vtkUnstructuredGrid> read_unstructured_grid(const std::string& path, const V
   throw Error(path + ": unknown extension '" + ext + "' for a " + what + " (expected .vtu or .vtk)");
 }
 
-// Writes `data` with `writer` (appended raw binary, zlib) to `target`: a file, or stdout for "-".
+// Writes `data` with `writer` (appended raw binary, zlib unless told otherwise) to `target`: a
+// file, or stdout for "-".
 void write_xml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& target, const std::string& path,
-               const VtkMessages& messages) {
+               const VtkMessages& messages, Compression compression = Compression::ZLib) {
   writer->SetInputData(data);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  // Level 1: on the 466,560-tet beam it writes about 1.5x faster than VTK's default level 5 for a
-  // 6% larger file, and 40x faster than level 9 (docs/PERFORMANCE.md, "I/O").
-  writer->SetCompressionLevel(1);
+  if (compression == Compression::ZLib) {
+    writer->SetCompressorTypeToZLib();
+    // Level 1: on the 466,560-tet beam it writes about 1.5x faster than VTK's default level 5 for a
+    // 6% larger file, and 40x faster than level 9 (docs/PERFORMANCE.md, "I/O").
+    writer->SetCompressionLevel(1);
+  } else if (compression == Compression::LZ4) {
+    writer->SetCompressorTypeToLZ4();
+    writer->SetCompressionLevel(1);  // LZ4's fastest (VTK maps level 1 to the largest acceleration)
+  } else {
+    writer->SetCompressorTypeToNone();
+  }
   writer->SetHeaderTypeToUInt64();
   if (target == "-") {
     writer->WriteToOutputStringOn();
@@ -676,7 +684,9 @@ Ptr<vtkCellArray> cell_array(const Cells& cells) {
 }
 }  // namespace
 
-void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
+void write_tet_mesh(const TetMesh& mesh, const std::string& path) { write_tet_mesh(mesh, path, Compression::ZLib); }
+
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression compression) {
   if (path != "-" && extension_of(path) != ".vtu")
     throw Error(path + ": volume meshes are written as .vtu, not '" + extension_of(path) + "'");
   const std::string name = path == "-" ? std::string("<stdout>") : path;
@@ -688,7 +698,7 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path) {
   add_arrays(grid->GetCellData(), mesh.cell_data, mesh.tets.rows(), "cell", name);
   add_arrays(grid->GetFieldData(), mesh.field_data, std::string::npos, "field", name);
   write_atomically(path, [&](const std::string& tmp) {
-    write_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, tmp, name, messages);
+    write_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, tmp, name, messages, compression);
   });
 }
 
@@ -830,7 +840,7 @@ void keep_cells(DataArrays& arrays, const std::vector<int>& kept) {
 }
 
 // A surface as a VTK XML unstructured grid of triangles: for readers that take no .vtp (meshio).
-void write_triangle_grid(const TriangleMesh& mesh, const std::string& path) {
+void write_triangle_grid(const TriangleMesh& mesh, const std::string& path, Compression compression) {
   VtkMessages messages;
   auto grid = Ptr<vtkUnstructuredGrid>::New();
   grid->SetPoints(to_vtk(mesh.points, path));
@@ -838,7 +848,7 @@ void write_triangle_grid(const TriangleMesh& mesh, const std::string& path) {
   add_arrays(grid->GetPointData(), mesh.point_data, mesh.points.rows(), "point", path);
   add_arrays(grid->GetCellData(), mesh.cell_data, mesh.triangles.rows(), "cell", path);
   write_atomically(path, [&](const std::string& tmp) {
-    write_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, tmp, path, messages);
+    write_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, tmp, path, messages, compression);
   });
 }
 
@@ -985,7 +995,11 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
 }
 
 void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
-  if (path != "-" && extension_of(path) == ".vtu") return write_triangle_grid(mesh, path);
+  write_triangle_mesh(mesh, path, Compression::ZLib);
+}
+
+void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path, Compression compression) {
+  if (path != "-" && extension_of(path) == ".vtu") return write_triangle_grid(mesh, path, compression);
   if (path != "-" && extension_of(path) != ".vtp")
     throw Error(path + ": surfaces are written as .vtp or .vtu, not '" + extension_of(path) + "'");
   const std::string name = path == "-" ? std::string("<stdout>") : path;
@@ -996,7 +1010,7 @@ void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
   add_arrays(poly->GetPointData(), mesh.point_data, mesh.points.rows(), "point", name);
   add_arrays(poly->GetCellData(), mesh.cell_data, mesh.triangles.rows(), "cell", name);
   write_atomically(path, [&](const std::string& tmp) {
-    write_xml(Ptr<vtkXMLPolyDataWriter>::New(), poly, tmp, name, messages);
+    write_xml(Ptr<vtkXMLPolyDataWriter>::New(), poly, tmp, name, messages, compression);
   });
 }
 

@@ -21,8 +21,17 @@ TetMesh read_tet_mesh(const std::string& path, std::vector<std::string>* warning
 /// the number of inverted tets it reoriented.
 int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::string>* warnings);
 
+/// How the VTK XML writers compress their appended binary data (docs/FORMATS.md, "Conventions"):
+///   ZLib  zlib level 1, what every tool writes;
+///   LZ4   VTK's vtkLZ4DataCompressor: written ~9x faster than zlib level 1, files ~1.25x larger;
+///         read by VTK >= 8.1, so ParaView >= 5.5 (xfem-sweep's frames, written every step);
+///   None  uncompressed.
+enum class Compression { ZLib, LZ4, None };
+
 /// Writes `mesh` as VTK XML `.vtu` (appended raw binary, zlib-compressed), atomically.
 void write_tet_mesh(const TetMesh& mesh, const std::string& path);
+/// The same with the given compression.
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression compression);
 
 /// Reads a triangulated surface (a cut) from `.vtp`, `.vtu` or legacy `.vtk` (POLYDATA or
 /// UNSTRUCTURED_GRID of triangles), `.stl` (coincident points merged), `.obj`, `.off` or gmsh
@@ -39,5 +48,7 @@ void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::ve
 
 /// Writes `mesh` as VTK XML `.vtp`, or `.vtu` (an unstructured grid of triangles), atomically.
 void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path);
+/// The same with the given compression.
+void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path, Compression compression);
 
 }  // namespace xfem

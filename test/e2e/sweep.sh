@@ -58,8 +58,15 @@ touch "$S/file"
 "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/refactor" --solutions --solver refactor \
   || fail "--solver refactor"
 [ "$(grep -c "^xfem-sweep: step [1-5]/5" "$S/progress.txt")" -eq 5 ] || fail "progress per step: $(cat "$S/progress.txt")"
-"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/quiet" 2>"$S/quiet.txt" || fail "-q"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/quiet" --compression zlib 2>"$S/quiet.txt" \
+  || fail "-q"
 [ ! -s "$S/quiet.txt" ] || fail "-q must silence the progress: $(cat "$S/quiet.txt")"
+# Frames: LZ4 by default, zlib on request.
+grep -q 'compressor="vtkLZ4DataCompressor"' "$S/frames/step_003.vtu" || fail "frames: LZ4 by default"
+grep -q 'compressor="vtkLZ4DataCompressor"' "$S/frames/step_003_wound.vtp" || fail "wound: LZ4 by default"
+grep -q 'compressor="vtkZLibDataCompressor"' "$S/quiet/step_003.vtu" || fail "--compression zlib"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 1 -o "$S/bad" --compression gzip 2>/dev/null
+[ $? -eq 2 ] || fail "--compression gzip must exit 2"
 [ "$(grep -c "<DataSet timestep=" "$S/frames/sweep.pvd")" -eq 10 ] || fail "sweep.pvd: 5 steps x (body, wound)"
 grep -q '"enriched_dofs"' "$S/report.json" || fail "report"
 # Pictures: one per step, under xvfb-run as the other pictures.

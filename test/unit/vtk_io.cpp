@@ -228,6 +228,49 @@ TEST_CASE("vtk_io: .vtu files are appended raw binary, zlib-compressed and deter
   CHECK(a.size() < raw);
 }
 
+TEST_CASE("vtk_io: LZ4-compressed and uncompressed .vtu and .vtp read back bitwise as written", "[vtk_io]") {
+  // xfem-sweep writes its frames with LZ4 (--compression): the project's reader must read them.
+  xfem::TetMesh m = xfem::box_mesh({5, 4, 3}, {0, 0, 0}, {1, 0.7, 0.4});
+  m.points(5, 1) += 1.0 / 3.0 * 1e-3;
+  const std::size_t np = m.points.rows(), nt = m.tets.rows();
+  m.point_data["displacement"] = xfem::make_array(DataArray::Type::Float64, 3, np, 0.0);
+  for (std::size_t i = 0; i < 3 * np; ++i) m.point_data["displacement"].values[i] = std::sin(0.37 * i) * 1e-3;
+  m.point_data["side"] = xfem::make_array(DataArray::Type::Int32, 1, np, -1);
+  m.cell_data["von_mises"] = xfem::make_array(DataArray::Type::Float64, 1, nt, 0.0);
+  for (std::size_t t = 0; t < nt; ++t) m.cell_data["von_mises"].values[t] = 1.0 / (t + 3.0);
+  xfem::TriangleMesh s;
+  s.points.resize(4, 3);
+  s.points << 0, 0, 0.2, 1, 0, 0.2, 1, 1.0 / 3.0, 0.2, 0, 1, 0.3;
+  s.triangles.resize(2, 3);
+  s.triangles << 0, 1, 2, 0, 2, 3;
+  s.cell_data["side"] = xfem::make_array(DataArray::Type::Int32, 1, 2, 1);
+  s.point_data["displacement"] = xfem::make_array(DataArray::Type::Float64, 3, 4, 2.0 / 3.0);
+  const auto dir = scratch_dir("compression");
+  for (const auto& [compression, compressor] :
+       {std::pair<xfem::Compression, std::string>{xfem::Compression::LZ4, "compressor=\"vtkLZ4DataCompressor\""},
+        {xfem::Compression::None, ""}}) {
+    INFO(compressor);
+    xfem::write_tet_mesh(m, dir + "/m.vtu", compression);
+    xfem::write_triangle_mesh(s, dir + "/s.vtp", compression);
+    const std::string bytes = read_bytes(dir + "/m.vtu");
+    CHECK_THAT(bytes, Catch::Contains("<AppendedData encoding=\"raw\">"));
+    if (compressor.empty()) CHECK_THAT(bytes, !Catch::Contains("compressor="));
+    else CHECK_THAT(bytes, Catch::Contains(compressor) && !Catch::Contains("vtkZLibDataCompressor"));
+    std::vector<std::string> warnings;
+    const xfem::TetMesh back = xfem::read_tet_mesh(dir + "/m.vtu", &warnings);
+    const xfem::TriangleMesh sback = xfem::read_triangle_mesh(dir + "/s.vtp", &warnings);
+    CHECK(warnings.empty());
+    CHECK(back.points == m.points);
+    CHECK(back.tets == m.tets);
+    CHECK(sback.points == s.points);
+    CHECK(sback.triangles == s.triangles);
+    for (const auto& [name, a] : m.point_data) CHECK(back.point_data.at(name).values == a.values);
+    for (const auto& [name, a] : m.cell_data) CHECK(back.cell_data.at(name).values == a.values);
+    for (const auto& [name, a] : s.point_data) CHECK(sback.point_data.at(name).values == a.values);
+    for (const auto& [name, a] : s.cell_data) CHECK(sback.cell_data.at(name).values == a.values);
+  }
+}
+
 TEST_CASE("vtk_io: reads an ASCII .vtu written by another program (Float32 points, Int32 ids)", "[vtk_io]") {
   const auto path = scratch_dir("ascii_vtu") + "/mesh.vtu";
   write_text(path, R"(<?xml version="1.0"?>
