@@ -66,6 +66,18 @@ done
 [ "$(grep -a -o 'Name="[a-z_]*"' "$S/a.vtu" | sort | uniq -d)" = "" ] || fail "arrays sharing a name in deformed.vtu"
 [ "$(grep -a -o 'ComponentName0="xx"' "$S/a.vtu" | wc -l)" -eq 2 ] || fail "strain and stress without component names"
 grep -q 'Name="side"' "$S/a.vtp" || fail "array side missing in wound.vtp"
+# --compression: zlib by default, LZ4 or none on request (the reader's bitwise round trip is in
+# test/unit/vtk_io.cpp); an unknown compressor is a usage error.
+grep -q 'compressor="vtkZLibDataCompressor"' "$S/a.vtu" || fail "deformed.vtu: zlib by default"
+"$VIS" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --solution "$S/u.mtx" --problem "$PROBLEM" -o "$S/l.vtu" \
+  --faces "$S/l.vtp" --compression lz4 || fail "--compression lz4"
+grep -q 'compressor="vtkLZ4DataCompressor"' "$S/l.vtu" && grep -q 'compressor="vtkLZ4DataCompressor"' "$S/l.vtp" \
+  || fail "--compression lz4: no LZ4 compressor in the files"
+"$VIS" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --solution "$S/u.mtx" --problem "$PROBLEM" -o "$S/n.vtu" \
+  --compression none || fail "--compression none"
+! grep -q 'compressor=' "$S/n.vtu" || fail "--compression none: compressed"
+"$VIS" "$S/enriched.vtu" --cut "$S/cut.vtp" --solution "$S/u.mtx" --problem "$PROBLEM" -o "$S/g.vtu" \
+  --compression gzip 2>/dev/null; [ $? -eq 2 ] || fail "--compression gzip must exit 2"
 
 # A picture under a virtual display.
 if command -v xvfb-run >/dev/null; then
