@@ -72,12 +72,16 @@ namespace {
 
 // Classifies the body against `cut` (none when empty), enriches it, and checks that every piece of
 // the cut body is held by a Dirichlet condition.
+// With `growing` (and the cut's triangle ids), the classification reuses the previous cut's.
 void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutSurface>& cut,
-                         const ClassifyOptions& options, CutSolution& out) {
+                         const ClassifyOptions& options, CutSolution& out, GrowingCutClassifier* growing = nullptr,
+                         const std::vector<int>* ids = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   const TetMesh& mesh = body.mesh;
   const bool empty = !cut || cut->mesh().triangles.rows() == 0;
-  const Classification c = empty ? classify_without_cut(mesh) : classify(mesh, *cut, options);
+  const Classification c = empty     ? classify_without_cut(mesh)
+                           : growing ? growing->classify(*cut, *ids)
+                                     : classify(mesh, *cut, options);
   out.counts = c.counts;
   out.em = enriched_mesh(mesh, c, empty ? nullptr : cut);
   out.classify_seconds = seconds_since(t0);
@@ -310,7 +314,8 @@ ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& opt
     : body_(body),
       options_(options),
       rule_(oversampling_quadrature(body.problem.points, body.problem.refine)),
-      schur_(*body.factor) {}
+      schur_(*body.factor),
+      classifier_(body.mesh, options) {}
 
 void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
                              const std::function<void(double)>& progress) {
@@ -336,7 +341,7 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
 CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
   CutSolution out;
   out.schur_used = true;
-  classify_and_enrich(body_, cut, options_, out);
+  classify_and_enrich(body_, cut, options_, out, &classifier_, &ids);
   const EnrichedMesh& em = out.em;
   const Problem& problem = body_.problem;
   auto t0 = std::chrono::steady_clock::now();
