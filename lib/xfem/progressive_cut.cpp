@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "xfem/assembly.h"
 #include "xfem/conforming_quadrature.h"
@@ -242,6 +246,30 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 
 namespace {
 
+// Runs body(begin, end) over [0, n) in chunks, in up to 8 threads (the cores there are); the first
+// exception is rethrown here after all have stopped.
+void in_threads(long n, const std::function<void(long, long)>& body) {
+  const long chunk = 8;
+  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
+  std::atomic<long> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&] {
+    try {
+      for (long b; (b = next.fetch_add(chunk)) < n;) body(b, std::min(n, b + chunk));
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = n;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 // Everything an enriched tet's element matrix is computed from, besides the fixed geometry and
 // problem (equal keys, equal matrices):
 //  - its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which enters
@@ -382,17 +410,24 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
     const Lame material = lame(problem.E, problem.nu);
     const bool conforming = problem.rule == Problem::Rule::Conforming;
     const CutElementSplits splits = conforming ? split_cut_elements(sub) : CutElementSplits();
-    PointRule points;
+    std::vector<Element*> slots(stale.size());
     for (std::size_t i = 0; i < stale.size(); ++i) {
-      Element& element = elements_[stale[i]];
-      element.key = std::move(keys[i]);
-      if (conforming) {
-        conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
-        element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
-      } else {
-        element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
-      }
+      slots[i] = &elements_[stale[i]];
+      slots[i]->key = std::move(keys[i]);
     }
+    // Each element matrix depends on its tet alone: computed in a few threads, the same bits.
+    in_threads(static_cast<long>(stale.size()), [&](long begin, long end) {
+      PointRule points;
+      for (long i = begin; i < end; ++i) {
+        Element& element = *slots[i];
+        if (conforming) {
+          conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
+          element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
+        } else {
+          element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
+        }
+      }
+    });
   }
 
   out.elements_seconds = seconds_since(t1);
