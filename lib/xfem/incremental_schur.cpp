@@ -139,20 +139,22 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
     SparseMatrix Kr(static_cast<int>(r), static_cast<int>(m));
     Kr.setFromTriplets(trip.begin(), trip.end());
     const SparseMatrix Kr_new = Kr.middleCols(static_cast<int>(m_kept), static_cast<int>(k));
-    const Eigen::MatrixXd V = G_ * Kr_new;                          // r x k
-    const Eigen::MatrixXd W = SparseMatrix(Kr.transpose()) * V;     // m x k
+    // The new rows of S, (K_eR G K_Re)(new, all) = (G K_R,new)^T K_Re: dense times sparse twice,
+    // each sparse entry an axpy on a contiguous column (the transposed product would gather).
+    const Eigen::MatrixXd Vt = (G_ * Kr_new).transpose();  // k x r
+    const Eigen::MatrixXd Wt = Vt * Kr;                     // k x m: row j = new row m_kept + j
+    for (long q = 0; q < m; ++q) S_.col(q).segment(m_kept, k) = -Wt.col(q);
     for (long j = 0; j < k; ++j) {
       const long a = m_kept + j;
-      S_.col(a).head(m) = -W.col(j);
       for (const auto& e : columns_[a].ee) {
         const auto it = position_.find(e.first);
-        if (it != position_.end()) S_(it->second, a) += e.second;
+        if (it != position_.end()) S_(a, it->second) += e.second;
       }
     }
-    for (long a = m_kept; a < m; ++a) {
-      for (long i = 0; i < m_kept; ++i) S_(a, i) = S_(i, a);
+    // The new columns by symmetry: above the new rows, and the new block's upper triangle.
+    S_.block(0, m_kept, m_kept, k) = S_.block(m_kept, 0, k, m_kept).transpose();
+    for (long a = m_kept; a < m; ++a)
       for (long i = m_kept; i < a; ++i) S_(i, a) = S_(a, i);
-    }
   }
   st.columns_seconds = seconds_since(t0);
 
