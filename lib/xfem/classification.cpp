@@ -10,13 +10,11 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <unordered_map>
 
 #include "xfem/cut_pieces.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 
 namespace xfem {
 
@@ -30,36 +28,6 @@ using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment
 // Local edges of a tet (i < j) and, for the face opposite vertex k, its three local edges.
 constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr int kFaceEdges[4][3] = {{3, 4, 5}, {1, 2, 5}, {0, 2, 4}, {0, 1, 3}};
-
-/// Runs body(begin, end) over [0, n) in a few threads. Every index is computed independently, so
-/// the result does not depend on the thread count. `progress` is reported by the first thread.
-void parallel_for(long n, const std::function<void(long, long)>& body,
-                  const std::function<void(double)>& progress = {}) {
-  const long chunk = 4096;
-  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
-  std::atomic<long> next{0};
-  // An exception in a worker (bad_alloc, a CGAL precondition) would call std::terminate: keep the
-  // first one, stop handing out work, and rethrow it on the calling thread after the join.
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto work = [&](bool report) {
-    try {
-      for (long b; (b = next.fetch_add(chunk)) < n;) {
-        body(b, std::min(n, b + chunk));
-        if (report && progress) progress(static_cast<double>(std::min(n, b + chunk)) / n);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = n;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-}
 
 Kernel::Point_3 to_cgal(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 

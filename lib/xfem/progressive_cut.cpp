@@ -3,12 +3,8 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "xfem/assembly.h"
 #include "xfem/conforming_quadrature.h"
@@ -17,6 +13,7 @@
 #include "xfem/element_stiffness.h"
 #include "xfem/error.h"
 #include "xfem/oversampling_quadrature.h"
+#include "xfem/parallel_for.h"
 #include "xfem/pieces.h"
 #include "xfem/seconds_since.h"
 
@@ -246,30 +243,6 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 
 namespace {
 
-// Runs body(begin, end) over [0, n) in chunks, in up to 8 threads (the cores there are); the first
-// exception is rethrown here after all have stopped.
-void in_threads(long n, const std::function<void(long, long)>& body) {
-  const long chunk = 8;
-  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
-  std::atomic<long> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto work = [&] {
-    try {
-      for (long b; (b = next.fetch_add(chunk)) < n;) body(b, std::min(n, b + chunk));
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = n;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-}
-
 // Everything an enriched tet's element matrix is computed from, besides the fixed geometry and
 // problem (equal keys, equal matrices):
 //  - its cut class, its nodes' sides when it is cut (they shift the sign enrichment, which enters
@@ -416,7 +389,7 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
       slots[i]->key = std::move(keys[i]);
     }
     // Each element matrix depends on its tet alone: computed in a few threads, the same bits.
-    in_threads(static_cast<long>(stale.size()), [&](long begin, long end) {
+    parallel_for(static_cast<long>(stale.size()), [&](long begin, long end) {
       PointRule points;
       for (long i = begin; i < end; ++i) {
         Element& element = *slots[i];
@@ -427,7 +400,7 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
           element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
         }
       }
-    });
+    }, {}, 8);
   }
 
   out.elements_seconds = seconds_since(t1);
