@@ -393,20 +393,21 @@ TEST_CASE("classification: without a cut everything is uncut and plain", "[class
 TEST_CASE("classification: a growing cut classified incrementally equals classify at every step",
           "[classification][progressive_cut]") {
   // Blades moving through a box: along y at x = 0.43 (between nodes), at x = 0.5 (through a plane of
-  // nodes: points on the cut, rules D1/D2), tilted along an arc; steps in order (incremental), then
-  // back and out of order (from scratch), then on again in order.
+  // nodes: points on the cut, rules D1/D2), tilted along an arc with radius enrichment; steps in
+  // order (incremental), then back and out of order (from scratch), then on again in order.
   const xfem::TetMesh mesh = xfem::box_mesh({8, 8, 4}, {0, 0, 0}, {1, 1, 0.5});
   struct Sweep {
     const char* name;
     xfem::BladePath path;
     double tilt;
+    double tip_radius = 0;
   };
   std::vector<Sweep> sweeps(3);
   sweeps[0] = {"x = 0.43", {}, 0.0};
   sweeps[0].path.polyline = {{0.43, -0.05, 0.6}, {0.43, 0.95, 0.6}};
   sweeps[1] = {"x = 0.5, through nodes", {}, 0.0};
   sweeps[1].path.polyline = {{0.5, -0.05, 0.625}, {0.5, 0.5, 0.625}, {0.5, 0.95, 0.625}};
-  sweeps[2] = {"arc, tilted", {}, 20.0};
+  sweeps[2] = {"arc, tilted, radius enrichment", {}, 20.0, 0.25};
   sweeps[2].path.centre = {0.5, -0.3, 0.6};
   sweeps[2].path.radius = 0.8;
   sweeps[2].path.a0 = 60;
@@ -416,13 +417,15 @@ TEST_CASE("classification: a growing cut classified incrementally equals classif
     const xfem::TriangleMesh sweep = xfem::cut_sweep(s.path, 0.3, {0, 0, -1}, s.tilt, 0.06, 1.0);
     const std::vector<double> times = xfem::cut_times(sweep, "sweep");
     const std::vector<double> t = xfem::step_times(times, 8);
-    xfem::GrowingCutClassifier growing(mesh);
+    xfem::ClassifyOptions options;
+    options.tip_radius = s.tip_radius;
+    xfem::GrowingCutClassifier growing(mesh, options);
     long incremental = 0, tested = 0, edges = 0;
     for (int k : {0, 1, 2, 3, 4, 5, 6, 7, 3, 1, 2, 6, 7}) {
       INFO("step " << k + 1);
       const xfem::CutSurface cut(xfem::cut_until(sweep, times, t[k]));
       const xfem::Classification a = growing.classify(cut, xfem::cut_until_ids(times, t[k]));
-      const xfem::Classification b = xfem::classify(mesh, cut);
+      const xfem::Classification b = xfem::classify(mesh, cut, options);
       CHECK(a.side == b.side);
       CHECK(a.on_cut == b.on_cut);
       CHECK(a.enrichment == b.enrichment);
@@ -437,6 +440,7 @@ TEST_CASE("classification: a growing cut classified incrementally equals classif
         CHECK(a.front.segments()[i].b == b.front.segments()[i].b);
       }
       CHECK(b.counts.partial + b.counts.complete > 0);
+      if (s.tip_radius > 0) CHECK(b.counts.radius_branch > 0);
       incremental += growing.stats().incremental;
       tested += growing.stats().tets;
       edges += growing.stats().edges;
