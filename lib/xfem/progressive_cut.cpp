@@ -73,10 +73,11 @@ namespace {
 
 // Classifies the body against `cut` (none when empty), enriches it, and checks that every piece of
 // the cut body is held by a Dirichlet condition.
-// With `growing` (and the cut's triangle ids), the classification reuses the previous cut's.
+// With `growing` (and the cut's triangle ids), the classification reuses the previous cut's; with
+// `faces`, the body's shared faces are not found again.
 void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutSurface>& cut,
                          const ClassifyOptions& options, CutSolution& out, GrowingCutClassifier* growing = nullptr,
-                         const std::vector<int>* ids = nullptr) {
+                         const std::vector<int>* ids = nullptr, const SharedFaces* faces = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   const TetMesh& mesh = body.mesh;
   const bool empty = !cut || cut->mesh().triangles.rows() == 0;
@@ -88,7 +89,8 @@ void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutS
   out.classify_seconds = seconds_since(t0);
   std::vector<char> node_constrained(out.em.np, 0);
   for (long dof : body.fixed) node_constrained[dof / 3] = 1;
-  const std::vector<Piece> pieces = find_pieces(out.em, node_constrained);
+  const std::vector<Piece> pieces =
+      faces ? find_pieces(out.em, node_constrained, *faces) : find_pieces(out.em, node_constrained);
   for (std::size_t i = 0; i < pieces.size(); ++i)
     if (!pieces[i].constrained)
       throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
@@ -316,7 +318,8 @@ ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& opt
       options_(options),
       rule_(oversampling_quadrature(body.problem.points, body.problem.refine)),
       schur_(*body.factor),
-      classifier_(body.mesh, options) {}
+      classifier_(body.mesh, options),
+      faces_(shared_faces(body.mesh)) {}
 
 void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
                              const std::function<void(double)>& progress) {
@@ -342,7 +345,7 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
 CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
   CutSolution out;
   out.schur_used = true;
-  classify_and_enrich(body_, cut, options_, out, &classifier_, &ids);
+  classify_and_enrich(body_, cut, options_, out, &classifier_, &ids, &faces_);
   const EnrichedMesh& em = out.em;
   const Problem& problem = body_.problem;
   auto t0 = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 #include "xfem/enriched_mesh.h"
 #include "xfem/incremental_schur.h"
 #include "xfem/oversampling_quadrature.h"
+#include "xfem/pieces.h"
 #include "xfem/problem.h"
 #include "xfem/schur_solver.h"
 
@@ -116,6 +117,7 @@ class ProgressiveCut {
   Quadrature rule_;
   IncrementalSchur schur_;
   GrowingCutClassifier classifier_;  // the previous step's classification, reused away from the cut's growth
+  SharedFaces faces_;                // the body's, for the check that every piece is held
   std::unordered_map<int, Element> elements_;
 };
 
