@@ -42,9 +42,9 @@ int main(int argc, char** argv) {
       "Progressive cutting: the cut of a blade's sweep (a cut surface whose triangles carry the cell array 'time',\n"
       "e.g. from xfem-mesh cut-sweep) solved at K times t_k = t0 + k (t1 - t0) / K, k = 1..K, the cut at t_k being\n"
       "the triangles with time <= t_k. The uncut body is assembled and factorized once (CHOLMOD); each step\n"
-      "classifies and enriches the body, integrates only the tets whose enrichment or nearby cut changed since the\n"
-      "previous step and solves for the enriched DOFs by block elimination, the Schur complement kept from step to\n"
-      "step (the uncut body's response on the DOFs the sweep touches computed once; --solver for the other ways):\n"
+      "classifies (the previous step's answers reused away from the new triangles) and enriches the body,\n"
+      "integrates only the tets whose enrichment or nearby cut changed since the previous step and solves for the\n"
+      "enriched DOFs by block elimination, the Schur complement kept from step to step (the uncut body's response on the DOFs the sweep touches computed once; --solver for the other ways):\n"
       "the same solution as xfem-classify, -enrich, -assemble and -solve on that cut (docs/PERFORMANCE.md: the cost). Writes per step\n"
       "DIR/step_NNN.vtu and DIR/step_NNN_wound.vtp (as xfem-visualize's deformed.vtu and wound.vtp) and the\n"
       "ParaView time series DIR/sweep.pvd (docs/FORMATS.md). Dirichlet conditions must have fixed values.",

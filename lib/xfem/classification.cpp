@@ -10,13 +10,11 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <unordered_map>
 
 #include "xfem/cut_pieces.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 
 namespace xfem {
 
@@ -30,36 +28,6 @@ using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment
 // Local edges of a tet (i < j) and, for the face opposite vertex k, its three local edges.
 constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr int kFaceEdges[4][3] = {{3, 4, 5}, {1, 2, 5}, {0, 2, 4}, {0, 1, 3}};
-
-/// Runs body(begin, end) over [0, n) in a few threads. Every index is computed independently, so
-/// the result does not depend on the thread count. `progress` is reported by the first thread.
-void parallel_for(long n, const std::function<void(long, long)>& body,
-                  const std::function<void(double)>& progress = {}) {
-  const long chunk = 4096;
-  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
-  std::atomic<long> next{0};
-  // An exception in a worker (bad_alloc, a CGAL precondition) would call std::terminate: keep the
-  // first one, stop handing out work, and rethrow it on the calling thread after the join.
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto work = [&](bool report) {
-    try {
-      for (long b; (b = next.fetch_add(chunk)) < n;) {
-        body(b, std::min(n, b + chunk));
-        if (report && progress) progress(static_cast<double>(std::min(n, b + chunk)) / n);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = n;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-}
 
 Kernel::Point_3 to_cgal(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 
@@ -253,9 +221,67 @@ std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, co
 
 }  // namespace
 
-Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options) {
+/// What classify keeps for the next cut of a growing sequence: the mesh's unique edges and each
+/// tet's edges (the mesh alone), and the previous cut's exact geometric answers.
+struct GrowingCutClassifier::Memory {
+  std::vector<std::uint64_t> unique;  // the mesh's edges, sorted keys
+  std::vector<int> tet_edges;         // 6 per tet: index into `unique`
+  std::vector<char> on_cut;           // per point: meets the previous cut (before D1's snapping)
+  std::vector<char> meets;            // per edge: meets the previous cut (-1: not tested, D2)
+  std::vector<double> above, below;   // per tet: volumes on each side of the previous cut
+  std::vector<char> split;            // per tet: 1 where above/below hold the previous cut's volumes
+  bool classified = false;            // the above hold a cut's answers
+  std::vector<int> ids;               // the previous cut's triangle ids, increasing
+  std::vector<std::array<double, 9>> corners;  // their corners, in the order of `ids`
+};
+
+namespace {
+
+using Box = Eigen::Matrix<double, 3, 2>;  // columns lo, hi
+
+// The boxes of the triangles added since the previous cut, and their union.
+struct Growth {
+  std::vector<Box> boxes;
+  Box all;
+  // Does the closed box [lo - grow, hi + grow] meet a new triangle's box?
+  bool near(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double grow = 0) const {
+    const auto meets = [&](const Box& b) {
+      return (b.col(0).array() <= hi.array() + grow).all() && (b.col(1).array() >= lo.array() - grow).all();
+    };
+    if (!meets(all)) return false;
+    for (const Box& b : boxes)
+      if (meets(b)) return true;
+    return false;
+  }
+};
+
+// The mesh's unique edges and each tet's edges into `memory`.
+void find_edges(const TetMesh& mesh, GrowingCutClassifier::Memory& memory) {
+  const long T = mesh.tets.rows();
+  std::vector<std::uint64_t> keys;
+  keys.reserve(6 * T);
+  for (long t = 0; t < T; ++t)
+    for (const auto& e : kEdge) keys.push_back(edge_key(mesh.tets(t, e[0]), mesh.tets(t, e[1])));
+  std::vector<std::uint64_t> unique = keys;
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  memory.tet_edges.assign(6 * T, 0);
+  parallel_for(T, [&](long b, long e) {
+    for (long i = 6 * b; i < 6 * e; ++i)
+      memory.tet_edges[i] = static_cast<int>(std::lower_bound(unique.begin(), unique.end(), keys[i]) - unique.begin());
+  });
+  memory.unique = std::move(unique);
+}
+
+// classify(), with the mesh's edges from `memory` and, when `growth` is given (the cut is the
+// previous one of `memory` plus the triangles of `growth`), the previous cut's answers away from the
+// new triangles. Leaves this cut's answers in `memory`.
+Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options,
+                             GrowingCutClassifier::Memory& memory, const Growth* growth,
+                             GrowingCutClassifier::Stats& stats) {
   const long V = mesh.points.rows(), T = mesh.tets.rows();
   Classification c;
+  std::atomic<long> tested_points{0}, tested_edges{0}, tested_tets{0};
   auto report = [&](double lo, double hi) {
     return options.progress ? std::function<void(double)>([&, lo, hi](double f) { options.progress(lo + (hi - lo) * f); })
                             : std::function<void(double)>();
@@ -267,29 +293,45 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
   parallel_for(V, [&](long b, long e) {
     const std::vector<int> s = cut.sides(mesh.points, b, e);
     std::copy(s.begin(), s.end(), c.side.begin() + b);
+    long tested = 0;
     for (long i = b; i < e; ++i) {
       const Eigen::Vector3d x = mesh.points.row(i).transpose();
-      c.on_cut[i] = cut.meets_segment(x, x);
+      if (growth && (memory.on_cut[i] || !growth->near(x, x))) {
+        c.on_cut[i] = memory.on_cut[i];  // met the old cut, or cannot meet a new triangle
+      } else {
+        c.on_cut[i] = cut.meets_segment(x, x);
+        ++tested;
+      }
     }
+    tested_points += tested;
   }, report(0.0, 0.3));
+  memory.on_cut = c.on_cut;
 
-  // 2. Unique edges, each tested once (D2 for edges with an end point on the cut).
-  std::vector<std::uint64_t> keys;
-  keys.reserve(6 * T);
-  for (long t = 0; t < T; ++t)
-    for (const auto& e : kEdge) keys.push_back(edge_key(mesh.tets(t, e[0]), mesh.tets(t, e[1])));
-  std::vector<std::uint64_t> unique = keys;
-  std::sort(unique.begin(), unique.end());
-  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  // 2. Unique edges, each tested once (D2 for edges with an end point on the cut). An edge whose
+  //    end points are off the grown cut were off the old one: its old answer is known.
+  if (memory.unique.empty()) find_edges(mesh, memory);
+  const std::vector<std::uint64_t>& unique = memory.unique;
   std::vector<char> edge_cut(unique.size(), 0);
+  if (!growth) memory.meets.assign(unique.size(), -1);
   parallel_for(static_cast<long>(unique.size()), [&](long b, long e) {
+    long tested = 0;
     for (long i = b; i < e; ++i) {
       const int p = static_cast<int>(unique[i] >> 32), q = static_cast<int>(unique[i] & 0xffffffffu);
-      if (c.on_cut[p] || c.on_cut[q])
+      if (c.on_cut[p] || c.on_cut[q]) {
         edge_cut[i] = c.side[p] != c.side[q];
-      else
-        edge_cut[i] = cut.meets_segment(mesh.points.row(p).transpose(), mesh.points.row(q).transpose());
+        memory.meets[i] = -1;
+        continue;
+      }
+      const Eigen::Vector3d a = mesh.points.row(p).transpose(), z = mesh.points.row(q).transpose();
+      if (growth && memory.meets[i] >= 0 && (memory.meets[i] || !growth->near(a.cwiseMin(z), a.cwiseMax(z)))) {
+        edge_cut[i] = memory.meets[i];
+      } else {
+        edge_cut[i] = cut.meets_segment(a, z);
+        ++tested;
+      }
+      memory.meets[i] = edge_cut[i];
     }
+    tested_edges += tested;
   }, report(0.3, 0.9));
 
   // 2b. D1 with a round-off tolerance: a node closer to the cut than 1e-10 of the mesh's size
@@ -327,8 +369,7 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       bool cut_edge[6];
       int n = 0;
       for (int k = 0; k < 6; ++k) {
-        const auto it = std::lower_bound(unique.begin(), unique.end(), keys[6 * t + k]);
-        cut_edge[k] = edge_cut[it - unique.begin()];
+        cut_edge[k] = edge_cut[memory.tet_edges[6 * t + k]];
         n += cut_edge[k];
       }
       int faces = 0;
@@ -357,19 +398,44 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
 
   // 5. The tets the cut separates: split along the cut (cut_pieces.h), exact volumes per side.
   //    Completely cut = not partially cut, meets the cut, and separated (below).
-  std::vector<double> above(T, 0.0), below(T, 0.0);
+  //    A tet's volumes are the old cut's when no new triangle comes within its longest edge h of it:
+  //    the triangles meeting it are the same, and so is the closest cut point of each piece's
+  //    centroid (at most h from a triangle meeting the tet), which gives the piece its side.
+  if (!growth) memory.split.assign(T, 0);
+  memory.above.resize(T, 0.0);
+  memory.below.resize(T, 0.0);
+  std::vector<double>& above = memory.above;
+  std::vector<double>& below = memory.below;
   parallel_for(T, [&](long b, long e) {
+    long tested = 0;
     for (long t = b; t < e; ++t) {
-      if (contact[t] == 2) {
-        c.cut_class[t] = CutClass::Partial;
+      if (contact[t] == 2 || !meets[t]) {
+        memory.split[t] = 0;
+        above[t] = below[t] = 0;
+        if (contact[t] == 2) c.cut_class[t] = CutClass::Partial;
         continue;
       }
-      if (!meets[t]) continue;
       TetCorners p;
       for (int k = 0; k < 4; ++k) p[k] = mesh.points.row(mesh.tets(t, k)).transpose();
-      const CutPieces pieces = split_by_cut(p, cut);
-      above[t] = pieces.volume_above;
-      below[t] = pieces.volume_below;
+      bool known = growth && memory.split[t];
+      if (known) {
+        Eigen::Vector3d lo = p[0], hi = p[0];
+        double h = 0;
+        for (int k = 0; k < 4; ++k) {
+          lo = lo.cwiseMin(p[k]);
+          hi = hi.cwiseMax(p[k]);
+          for (int l = k + 1; l < 4; ++l) h = std::max(h, (p[k] - p[l]).norm());
+        }
+        known = !growth->near(lo, hi, h * (1 + 1e-9) + on_cut_tolerance);  // D1's snapping moves the cut that far
+      }
+      if (!known) {
+        const CutPieces pieces = split_by_cut(p, cut);
+        above[t] = pieces.volume_above;
+        below[t] = pieces.volume_below;
+        memory.split[t] = 1;
+        ++tested;
+      }
+      const struct { double volume_above, volume_below; } pieces{above[t], below[t]};
       // Separated: some node's sign function lives in the tet (volume on the side opposite to the
       // node's own: across the cut, or below a node lying on it, which has side +1). A tet the
       // front only touches (all its nodes branch enriched) counts as separated only with volume
@@ -381,6 +447,7 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
       const bool both = pieces.volume_above > 0 && pieces.volume_below > 0;
       if (contact[t] == 1 ? both : opposite) c.cut_class[t] = CutClass::Complete;
     }
+    tested_tets += tested;
   });
 
   // 6. Enrichment. Branch: every node whose star (the tets around it) holds the front in its inside:
@@ -436,6 +503,76 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
   n.none = V - n.sign - n.branch;
   n.front_segments = static_cast<long>(c.front.segments().size());
   if (options.progress) options.progress(1.0);
+  memory.classified = true;
+  stats.incremental = growth != nullptr;
+  stats.points = tested_points;
+  stats.edges = tested_edges;
+  stats.tets = tested_tets;
+  return c;
+}
+
+}  // namespace
+
+Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options) {
+  GrowingCutClassifier::Memory memory;
+  GrowingCutClassifier::Stats stats;
+  return classify_with(mesh, cut, options, memory, nullptr, stats);
+}
+
+GrowingCutClassifier::GrowingCutClassifier(const TetMesh& mesh, const ClassifyOptions& options)
+    : mesh_(&mesh), options_(options), memory_(std::make_unique<Memory>()) {}
+GrowingCutClassifier::~GrowingCutClassifier() = default;
+GrowingCutClassifier::GrowingCutClassifier(GrowingCutClassifier&&) noexcept = default;
+GrowingCutClassifier& GrowingCutClassifier::operator=(GrowingCutClassifier&&) noexcept = default;
+
+Classification GrowingCutClassifier::classify(const CutSurface& cut, const std::vector<int>& ids) {
+  const TriangleMesh& tm = cut.mesh();
+  const long F = tm.triangles.rows();
+  if (static_cast<long>(ids.size()) != F)
+    throw Error("GrowingCutClassifier: " + std::to_string(ids.size()) + " triangle ids for " + std::to_string(F) +
+                " triangles");
+  // The triangles by id, with their corners; the new ones are those the previous cut lacked.
+  std::vector<std::pair<int, std::array<double, 9>>> now(static_cast<std::size_t>(F));
+  for (long k = 0; k < F; ++k) {
+    now[k].first = ids[k];
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 3; ++i) now[k].second[3 * c + i] = tm.points(tm.triangles(k, c), i);
+  }
+  std::sort(now.begin(), now.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (long k = 1; k < F; ++k)
+    if (now[k].first == now[k - 1].first)
+      throw Error("GrowingCutClassifier: triangle id " + std::to_string(now[k].first) + " given twice");
+  Memory& m = *memory_;
+  bool grows = m.classified;
+  Growth growth;
+  growth.all.col(0).setConstant(1e300);
+  growth.all.col(1).setConstant(-1e300);
+  std::size_t old = 0;
+  for (const auto& [id, corners] : now) {
+    if (old < m.ids.size() && m.ids[old] == id) {
+      grows = grows && m.corners[old] == corners;
+      ++old;
+      continue;
+    }
+    if (old < m.ids.size() && m.ids[old] < id) grows = false;  // an old triangle is missing
+    Box b;
+    for (int i = 0; i < 3; ++i) {
+      b(i, 0) = std::min({corners[i], corners[3 + i], corners[6 + i]});
+      b(i, 1) = std::max({corners[i], corners[3 + i], corners[6 + i]});
+    }
+    growth.all.col(0) = growth.all.col(0).cwiseMin(b.col(0));
+    growth.all.col(1) = growth.all.col(1).cwiseMax(b.col(1));
+    growth.boxes.push_back(b);
+  }
+  grows = grows && old == m.ids.size();
+  m.ids.clear();
+  m.corners.clear();
+  m.classified = false;  // until classify_with has finished (it may throw)
+  Classification c = classify_with(*mesh_, cut, options_, m, grows ? &growth : nullptr, stats_);
+  for (const auto& [id, corners] : now) {
+    m.ids.push_back(id);
+    m.corners.push_back(corners);
+  }
   return c;
 }
 

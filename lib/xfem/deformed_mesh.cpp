@@ -9,6 +9,7 @@
 #include "xfem/element_stiffness.h"
 #include "xfem/enriched_basis.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 
 namespace xfem {
 namespace {
@@ -46,22 +47,27 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
   v.tets = split.tets;
   DataArray disp = make_array(DataArray::Type::Float64, 3, np);
   DataArray point_side = make_array(DataArray::Type::Int32, 1, np);
-  const Eigen::Index work = np + nt;
-  for (Eigen::Index k = 0; k < np; ++k) {
-    const Eigen::Vector3d x = split.points.row(k).transpose();
-    const Eigen::Vector3d d = u.value(split.point_tet[k], x, split.point_side[k]);
-    if (!d.allFinite())
+  const double work = static_cast<double>(np + nt);
+  // Every point and every cell on its own: in a few threads (parallel_for.h), the same values.
+  parallel_for(np, [&](long begin, long end) {
+    for (Eigen::Index k = begin; k < end; ++k) {
+      const Eigen::Vector3d x = split.points.row(k).transpose();
+      const Eigen::Vector3d d = u.value(split.point_tet[k], x, split.point_side[k]);
+      for (int c = 0; c < 3; ++c) disp.values[3 * k + c] = d[c];
+      point_side.values[k] = split.point_side[k];
+    }
+  }, progress ? std::function<void(double)>([&](double f) { progress(f * np / work); }) : std::function<void(double)>());
+  for (Eigen::Index k = 0; k < np; ++k)
+    if (!std::isfinite(disp.values[3 * k]) || !std::isfinite(disp.values[3 * k + 1]) ||
+        !std::isfinite(disp.values[3 * k + 2]))
       throw Error("deformed_body: displacement at point " + std::to_string(k) + " (in tet " +
                   std::to_string(split.point_tet[k]) + ") is not finite");
-    for (int c = 0; c < 3; ++c) disp.values[3 * k + c] = d[c];
-    point_side.values[k] = split.point_side[k];
-    if (progress && k % 4096 == 0) progress(static_cast<double>(k) / work);
-  }
 
   DataArray cls = make_array(DataArray::Type::Int32, 1, nt), side = make_array(DataArray::Type::Int32, 1, nt),
             parent = make_array(DataArray::Type::Int64, 1, nt), strain = make_array(DataArray::Type::Float64, 6, nt),
             stress = make_array(DataArray::Type::Float64, 6, nt), vm = make_array(DataArray::Type::Float64, 1, nt);
-  for (Eigen::Index t = 0; t < nt; ++t) {
+  parallel_for(nt, [&](long begin, long end) {
+  for (Eigen::Index t = begin; t < end; ++t) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
     const int p = split.parent[t];
@@ -78,8 +84,9 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
     cls.values[t] = cut_class[p];
     side.values[t] = split.tet_side[t];
     parent.values[t] = p;
-    if (progress && t % 4096 == 0) progress(static_cast<double>(np + t) / work);
   }
+  }, progress ? std::function<void(double)>([&](double f) { progress((np + f * nt) / work); })
+              : std::function<void(double)>());
   v.point_data["displacement"] = disp;
   v.point_data["side"] = point_side;
   v.cell_data["cut_class"] = cls;

@@ -37,7 +37,8 @@ struct DeformedBody {
 /// Evaluates `u` on the split mesh: every point copy with its own side, so the two faces of the
 /// cut move apart by the solution's jump. E (Pa) > 0 and nu in (-1, 0.5) give the stress
 /// (Hooke: sigma = lambda tr(eps) I + 2 mu eps, lambda and mu of DESIGN.md). `cut_class` is per
-/// input tet. `progress` (optional) is called with the fraction done. Throws xfem::Error for a bad
+/// input tet; `u` is evaluated from several threads at once (parallel_for.h), so it must not
+/// modify shared state. `progress` (optional) is called with the fraction done. Throws xfem::Error for a bad
 /// E or nu, or a non-finite displacement (naming the point and its input tet).
 /// `wound_offset`: the wound's points are moved by this fraction of the body's diagonal along its
 /// faces' outward normal, so that it does not z-fight with deformed.vtu's cut faces (0 keeps the

@@ -52,6 +52,32 @@ void IncrementalSchur::extend_region(const std::vector<int>& free_dofs, const st
   G_ = std::move(G);
 }
 
+namespace {
+// A B for a dense A and a sparse B, neighbouring columns of B with the same rows (an enriched
+// node's 3 components, a branch node's 4 functions: one support) multiplied together with A's
+// columns gathered once for them: A (G, 5,436^2 doubles on the organ) is too large for the caches,
+// and reading a column of it per non-zero of B dominated.
+Eigen::MatrixXd times_sparse(const Eigen::MatrixXd& A, const SparseMatrix& B) {
+  const long r = A.rows(), k = B.cols();
+  Eigen::MatrixXd V(r, k), Ap, D;
+  const int* outer = B.outerIndexPtr();
+  const int* inner = B.innerIndexPtr();
+  for (long j = 0; j < k;) {
+    long j2 = j + 1;
+    while (j2 < k && std::equal(inner + outer[j], inner + outer[j + 1], inner + outer[j2], inner + outer[j2 + 1])) ++j2;
+    const long p = outer[j + 1] - outer[j], g = j2 - j;
+    Ap.resize(r, p);
+    for (long i = 0; i < p; ++i) Ap.col(i) = A.col(inner[outer[j] + i]);
+    D.resize(p, g);
+    for (long c = 0; c < g; ++c)
+      for (long i = 0; i < p; ++i) D(i, c) = B.valuePtr()[outer[j + c] + i];
+    V.middleCols(j, g).noalias() = Ap * D;
+    j = j2;
+  }
+  return V;
+}
+}  // namespace
+
 void IncrementalSchur::reserve(long m) {
   if (m <= S_.rows()) return;
   const long cap = std::max<long>(m, S_.rows() + S_.rows() / 2);
@@ -139,20 +165,22 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
     SparseMatrix Kr(static_cast<int>(r), static_cast<int>(m));
     Kr.setFromTriplets(trip.begin(), trip.end());
     const SparseMatrix Kr_new = Kr.middleCols(static_cast<int>(m_kept), static_cast<int>(k));
-    const Eigen::MatrixXd V = G_ * Kr_new;                          // r x k
-    const Eigen::MatrixXd W = SparseMatrix(Kr.transpose()) * V;     // m x k
+    // The new rows of S, (K_eR G K_Re)(new, all) = (G K_R,new)^T K_Re: dense times sparse twice,
+    // both on contiguous columns (the transposed sparse product would gather rows).
+    const Eigen::MatrixXd Vt = times_sparse(G_, Kr_new).transpose();  // k x r
+    const Eigen::MatrixXd Wt = times_sparse(Vt, Kr);                    // k x m: row j = new row m_kept + j
+    for (long q = 0; q < m; ++q) S_.col(q).segment(m_kept, k) = -Wt.col(q);
     for (long j = 0; j < k; ++j) {
       const long a = m_kept + j;
-      S_.col(a).head(m) = -W.col(j);
       for (const auto& e : columns_[a].ee) {
         const auto it = position_.find(e.first);
-        if (it != position_.end()) S_(it->second, a) += e.second;
+        if (it != position_.end()) S_(a, it->second) += e.second;
       }
     }
-    for (long a = m_kept; a < m; ++a) {
-      for (long i = 0; i < m_kept; ++i) S_(a, i) = S_(i, a);
+    // The new columns by symmetry: above the new rows, and the new block's upper triangle.
+    S_.block(0, m_kept, m_kept, k) = S_.block(m_kept, 0, k, m_kept).transpose();
+    for (long a = m_kept; a < m; ++a)
       for (long i = m_kept; i < a; ++i) S_(i, a) = S_(a, i);
-    }
   }
   st.columns_seconds = seconds_since(t0);
 

@@ -10,35 +10,26 @@
 
 namespace xfem {
 
-std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& node_constrained) {
-  const int nt = m.tets(), nv = static_cast<int>(m.mesh.points.rows());
-  if (static_cast<int>(m.cut_class.size()) != nt)
-    throw Error("find_pieces: " + std::to_string(m.cut_class.size()) + " cut classes for " + std::to_string(nt) + " tets");
-  if (static_cast<int>(m.side.size()) != nv || static_cast<int>(node_constrained.size()) != nv)
-    throw Error("find_pieces: side/constraint arrays do not match the " + std::to_string(nv) + " points");
-  // Part ids: 2t for tet t (the half above the cut if t is completely cut), 2t + 1 the half below.
-  const auto complete = [&](int t) { return m.cut_class[t] == 2; };
-  const auto part_on = [&](int t, int side) { return complete(t) && side < 0 ? 2 * t + 1 : 2 * t; };
-  UnionFind uf(2 * nt);
-
-  // 1. Faces shared by two tets: sorted node triples, equal neighbours after sorting. The sort is
-  // a counting sort by the lowest node followed by small sorts within each node's faces (about
-  // 20 each): the same order as one std::sort of all 4T faces, 3-4x faster on the 466k-tet
-  // reference (docs/PERFORMANCE.md, "Speed-up").
+SharedFaces shared_faces(const TetMesh& mesh) {
+  const int nt = static_cast<int>(mesh.tets.rows()), nv = static_cast<int>(mesh.points.rows());
+  // Sorted node triples, equal neighbours after sorting. The sort is a counting sort by the lowest
+  // node followed by small sorts within each node's faces (about 20 each): the same order as one
+  // std::sort of all 4T faces, 3-4x faster on the 466k-tet reference (docs/PERFORMANCE.md,
+  // "Speed-up").
   std::vector<int> start(static_cast<std::size_t>(nv) + 1, 0);  // faces with lowest node v: start[v]..
   const auto face_of = [&](int t, int skip) {
     std::array<int, 4> f{};
     int k = 0;
     for (int c = 0; c < 4; ++c)
-      if (c != skip) f[k++] = m.mesh.tets(t, c);
+      if (c != skip) f[k++] = mesh.tets(t, c);
     std::sort(f.begin(), f.begin() + 3);
     f[3] = t;
     return f;
   };
   for (int t = 0; t < nt; ++t) {
     for (int c = 0; c < 4; ++c)
-      if (m.mesh.tets(t, c) < 0 || m.mesh.tets(t, c) >= nv)
-        throw Error("find_pieces: tet " + std::to_string(t) + " has node " + std::to_string(m.mesh.tets(t, c)) +
+      if (mesh.tets(t, c) < 0 || mesh.tets(t, c) >= nv)
+        throw Error("find_pieces: tet " + std::to_string(t) + " has node " + std::to_string(mesh.tets(t, c)) +
                     " outside the " + std::to_string(nv) + " points");
     for (int skip = 0; skip < 4; ++skip) ++start[face_of(t, skip)[0] + 1];
   }
@@ -53,10 +44,37 @@ std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& n
       }
   }
   for (int v = 0; v < nv; ++v) std::sort(faces.begin() + start[v], faces.begin() + start[v + 1]);
+  SharedFaces out;
+  out.tets = nt;
+  out.points = nv;
   for (std::size_t k = 0; k + 1 < faces.size(); ++k) {
     const auto &a = faces[k], &b = faces[k + 1];
-    if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) continue;
-    int t1 = a[3], t2 = b[3];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) out.faces.push_back({a[0], a[1], a[2], a[3], b[3]});
+  }
+  return out;
+}
+
+std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& node_constrained) {
+  return find_pieces(m, node_constrained, shared_faces(m.mesh));
+}
+
+std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& node_constrained,
+                               const SharedFaces& shared) {
+  const int nt = m.tets(), nv = static_cast<int>(m.mesh.points.rows());
+  if (static_cast<int>(m.cut_class.size()) != nt)
+    throw Error("find_pieces: " + std::to_string(m.cut_class.size()) + " cut classes for " + std::to_string(nt) + " tets");
+  if (static_cast<int>(m.side.size()) != nv || static_cast<int>(node_constrained.size()) != nv)
+    throw Error("find_pieces: side/constraint arrays do not match the " + std::to_string(nv) + " points");
+  if (shared.tets != nt || shared.points != nv)
+    throw Error("find_pieces: the shared faces are of another mesh");
+  // Part ids: 2t for tet t (the half above the cut if t is completely cut), 2t + 1 the half below.
+  const auto complete = [&](int t) { return m.cut_class[t] == 2; };
+  const auto part_on = [&](int t, int side) { return complete(t) && side < 0 ? 2 * t + 1 : 2 * t; };
+  UnionFind uf(2 * nt);
+
+  // 1. Faces shared by two tets.
+  for (const auto& a : shared.faces) {
+    int t1 = a[3], t2 = a[4];
     if (complete(t2)) std::swap(t1, t2);  // t1 is the completely cut one, if any
     if (!complete(t1)) {
       uf.join(2 * t1, 2 * t2);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <array>
 #include <vector>
 
 #include "xfem/enriched_mesh.h"
@@ -25,5 +26,18 @@ namespace xfem {
 /// @return the pieces, ordered by their lowest tet index (piece 0 holds tet 0); Piece::tets counts
 ///         tets and tet halves. Throws xfem::Error if the array sizes do not match the mesh.
 std::vector<Piece> find_pieces(const EnrichedMesh& mesh, const std::vector<char>& node_constrained);
+
+/// The faces two tets of `mesh` share (the mesh alone: for many cuts of one body, e.g. the steps
+/// of a sweep): per face its 3 nodes sorted and the two tets. Throws xfem::Error for a node index
+/// out of range.
+struct SharedFaces {
+  std::vector<std::array<int, 5>> faces;
+  int tets = 0, points = 0;
+};
+SharedFaces shared_faces(const TetMesh& mesh);
+
+/// find_pieces with the mesh's shared faces computed before (the same result).
+std::vector<Piece> find_pieces(const EnrichedMesh& mesh, const std::vector<char>& node_constrained,
+                               const SharedFaces& shared);
 
 }  // namespace xfem

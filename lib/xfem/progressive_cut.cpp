@@ -13,6 +13,7 @@
 #include "xfem/element_stiffness.h"
 #include "xfem/error.h"
 #include "xfem/oversampling_quadrature.h"
+#include "xfem/parallel_for.h"
 #include "xfem/pieces.h"
 #include "xfem/seconds_since.h"
 
@@ -72,18 +73,24 @@ namespace {
 
 // Classifies the body against `cut` (none when empty), enriches it, and checks that every piece of
 // the cut body is held by a Dirichlet condition.
+// With `growing` (and the cut's triangle ids), the classification reuses the previous cut's; with
+// `faces`, the body's shared faces are not found again.
 void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutSurface>& cut,
-                         const ClassifyOptions& options, CutSolution& out) {
+                         const ClassifyOptions& options, CutSolution& out, GrowingCutClassifier* growing = nullptr,
+                         const std::vector<int>* ids = nullptr, const SharedFaces* faces = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   const TetMesh& mesh = body.mesh;
   const bool empty = !cut || cut->mesh().triangles.rows() == 0;
-  const Classification c = empty ? classify_without_cut(mesh) : classify(mesh, *cut, options);
+  const Classification c = empty     ? classify_without_cut(mesh)
+                           : growing ? growing->classify(*cut, *ids)
+                                     : classify(mesh, *cut, options);
   out.counts = c.counts;
   out.em = enriched_mesh(mesh, c, empty ? nullptr : cut);
   out.classify_seconds = seconds_since(t0);
   std::vector<char> node_constrained(out.em.np, 0);
   for (long dof : body.fixed) node_constrained[dof / 3] = 1;
-  const std::vector<Piece> pieces = find_pieces(out.em, node_constrained);
+  const std::vector<Piece> pieces =
+      faces ? find_pieces(out.em, node_constrained, *faces) : find_pieces(out.em, node_constrained);
   for (std::size_t i = 0; i < pieces.size(); ++i)
     if (!pieces[i].constrained)
       throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
@@ -310,7 +317,9 @@ ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& opt
     : body_(body),
       options_(options),
       rule_(oversampling_quadrature(body.problem.points, body.problem.refine)),
-      schur_(*body.factor) {}
+      schur_(*body.factor),
+      classifier_(body.mesh, options),
+      faces_(shared_faces(body.mesh)) {}
 
 void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
                              const std::function<void(double)>& progress) {
@@ -336,7 +345,7 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
 CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
   CutSolution out;
   out.schur_used = true;
-  classify_and_enrich(body_, cut, options_, out);
+  classify_and_enrich(body_, cut, options_, out, &classifier_, &ids, &faces_);
   const EnrichedMesh& em = out.em;
   const Problem& problem = body_.problem;
   auto t0 = std::chrono::steady_clock::now();
@@ -377,17 +386,24 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
     const Lame material = lame(problem.E, problem.nu);
     const bool conforming = problem.rule == Problem::Rule::Conforming;
     const CutElementSplits splits = conforming ? split_cut_elements(sub) : CutElementSplits();
-    PointRule points;
+    std::vector<Element*> slots(stale.size());
     for (std::size_t i = 0; i < stale.size(); ++i) {
-      Element& element = elements_[stale[i]];
-      element.key = std::move(keys[i]);
-      if (conforming) {
-        conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
-        element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
-      } else {
-        element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
-      }
+      slots[i] = &elements_[stale[i]];
+      slots[i]->key = std::move(keys[i]);
     }
+    // Each element matrix depends on its tet alone: computed in a few threads, the same bits.
+    parallel_for(static_cast<long>(stale.size()), [&](long begin, long end) {
+      PointRule points;
+      for (long i = begin; i < end; ++i) {
+        Element& element = *slots[i];
+        if (conforming) {
+          conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
+          element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
+        } else {
+          element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
+        }
+      }
+    }, {}, 8);
   }
 
   out.elements_seconds = seconds_since(t1);

@@ -11,6 +11,7 @@
 #include "xfem/enriched_mesh.h"
 #include "xfem/incremental_schur.h"
 #include "xfem/oversampling_quadrature.h"
+#include "xfem/pieces.h"
 #include "xfem/problem.h"
 #include "xfem/schur_solver.h"
 
@@ -83,7 +84,8 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 
 /// A sweep's cuts solved one after the other on the uncut body, each step at the cost of what the
 /// cut's growth changed (issue 20). Per step: the body is classified against the cut and enriched
-/// as solve_cut does; element matrices are computed only for enriched tets whose inputs changed
+/// as solve_cut does (GrowingCutClassifier: the previous step's classification reused away from the
+/// new triangles); element matrices are computed only for enriched tets whose inputs changed
 /// since the previous step (their enrichment layout, node sides, cut class, the sweep's triangles
 /// near them and, where the front matters, the front segments near them), the others reused; the
 /// enriched DOFs' columns of K are gathered from them and the Schur complement on the enriched DOFs
@@ -114,6 +116,8 @@ class ProgressiveCut {
   ClassifyOptions options_;
   Quadrature rule_;
   IncrementalSchur schur_;
+  GrowingCutClassifier classifier_;  // the previous step's classification, reused away from the cut's growth
+  SharedFaces faces_;                // the body's, for the check that every piece is held
   std::unordered_map<int, Element> elements_;
 };
 

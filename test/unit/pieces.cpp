@@ -52,6 +52,26 @@ TEST_CASE("pieces: a constrained node holds only its own side of a cut tet", "[p
   CHECK(pieces[1].constrained);
 }
 
+TEST_CASE("pieces: with the mesh's shared faces found once, the same pieces for every cut", "[pieces]") {
+  xfem::EnrichedMesh m = column_cut_in_the_middle();
+  const xfem::SharedFaces faces = xfem::shared_faces(m.mesh);
+  for (int partial : {-1, 8, 3}) {
+    INFO("partially cut tet " << partial);
+    if (partial >= 0) m.cut_class[partial] = 1;
+    for (double z : {0.0, 1.0, 2.0}) {
+      const auto a = xfem::find_pieces(m, constrained_at_z(m, z));
+      const auto b = xfem::find_pieces(m, constrained_at_z(m, z), faces);
+      REQUIRE(a.size() == b.size());
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        CHECK(a[i].tets == b[i].tets);
+        CHECK(a[i].constrained == b[i].constrained);
+      }
+    }
+  }
+  const xfem::SharedFaces other = xfem::shared_faces(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
+  CHECK_THROWS_WITH(xfem::find_pieces(m, constrained_at_z(m, 0.0), other), Catch::Matchers::Contains("another mesh"));
+}
+
 TEST_CASE("pieces: a partially cut tet holds both sides together", "[pieces]") {
   xfem::EnrichedMesh m = column_cut_in_the_middle();
   m.cut_class[8] = 1;  // the crack front runs through tet 8
