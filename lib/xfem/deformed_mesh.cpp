@@ -67,24 +67,24 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
             parent = make_array(DataArray::Type::Int64, 1, nt), strain = make_array(DataArray::Type::Float64, 6, nt),
             stress = make_array(DataArray::Type::Float64, 6, nt), vm = make_array(DataArray::Type::Float64, 1, nt);
   parallel_for(nt, [&](long begin, long end) {
-  for (Eigen::Index t = begin; t < end; ++t) {
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
-    const int p = split.parent[t];
-    const Eigen::Matrix3d G = u.gradient(p, centroid, split.tet_side[t]);
-    const Eigen::Matrix3d eps = 0.5 * (G + G.transpose());
-    const Eigen::Matrix3d sigma = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2 * mu * eps;
-    // VTK's order of a symmetric tensor's 6 components (as ParaView reads them).
-    static const int kI[6] = {0, 1, 2, 0, 1, 0}, kJ[6] = {0, 1, 2, 1, 2, 2};
-    for (int c = 0; c < 6; ++c) {
-      strain.values[6 * t + c] = eps(kI[c], kJ[c]);
-      stress.values[6 * t + c] = sigma(kI[c], kJ[c]);
+    for (Eigen::Index t = begin; t < end; ++t) {
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
+      const int p = split.parent[t];
+      const Eigen::Matrix3d G = u.gradient(p, centroid, split.tet_side[t]);
+      const Eigen::Matrix3d eps = 0.5 * (G + G.transpose());
+      const Eigen::Matrix3d sigma = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2 * mu * eps;
+      // VTK's order of a symmetric tensor's 6 components (as ParaView reads them).
+      static const int kI[6] = {0, 1, 2, 0, 1, 0}, kJ[6] = {0, 1, 2, 1, 2, 2};
+      for (int c = 0; c < 6; ++c) {
+        strain.values[6 * t + c] = eps(kI[c], kJ[c]);
+        stress.values[6 * t + c] = sigma(kI[c], kJ[c]);
+      }
+      vm.values[t] = von_mises(sigma);
+      cls.values[t] = cut_class[p];
+      side.values[t] = split.tet_side[t];
+      parent.values[t] = p;
     }
-    vm.values[t] = von_mises(sigma);
-    cls.values[t] = cut_class[p];
-    side.values[t] = split.tet_side[t];
-    parent.values[t] = p;
-  }
   }, progress ? std::function<void(double)>([&](double f) { progress((np + f * nt) / work); })
               : std::function<void(double)>());
   v.point_data["displacement"] = disp;
