@@ -203,6 +203,7 @@ int main(int argc, char** argv) {
       picture.height = height;
       picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
     }
+    const xfem::Compression packing = xfem::compression_named(compression);
     for (int k = 1; k <= steps; ++k) {
       start = xfem::cli::now();
       const xfem::CutSolution step = k == steps && last ? std::move(*last) : solve_step(k);
@@ -213,9 +214,6 @@ int main(int argc, char** argv) {
       const double built = xfem::cli::now() - write_start;
       const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
       const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
-      const xfem::Compression packing = compression == "lz4"    ? xfem::Compression::LZ4
-                                        : compression == "none" ? xfem::Compression::None
-                                                                : xfem::Compression::ZLib;
       xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string(), packing);
       xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string(), packing);
       const double framed = xfem::cli::now() - write_start;  // what xfem-visualize does

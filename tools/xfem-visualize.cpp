@@ -145,9 +145,7 @@ int main(int argc, char** argv) {
       o.view = camera;
     }
     if (!png.empty()) xfem::write_snapshot(body.volume, body.wound, png, o);
-    const xfem::Compression packing = compression == "lz4"    ? xfem::Compression::LZ4
-                                      : compression == "none" ? xfem::Compression::None
-                                                              : xfem::Compression::ZLib;
+    const xfem::Compression packing = xfem::compression_named(compression);
     xfem::write_tet_mesh(body.volume, output, packing);
     if (!faces.empty()) xfem::write_triangle_mesh(body.wound, faces, packing);
     if (!script.empty())

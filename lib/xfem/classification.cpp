@@ -435,7 +435,6 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
         memory.split[t] = 1;
         ++tested;
       }
-      const struct { double volume_above, volume_below; } pieces{above[t], below[t]};
       // Separated: some node's sign function lives in the tet (volume on the side opposite to the
       // node's own: across the cut, or below a node lying on it, which has side +1). A tet the
       // front only touches (all its nodes branch enriched) counts as separated only with volume
@@ -443,8 +442,8 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
       // which is no cut.
       bool opposite = false;
       for (int k = 0; k < 4; ++k)
-        opposite = opposite || (c.side[mesh.tets(t, k)] > 0 ? pieces.volume_below : pieces.volume_above) > 0;
-      const bool both = pieces.volume_above > 0 && pieces.volume_below > 0;
+        opposite = opposite || (c.side[mesh.tets(t, k)] > 0 ? below[t] : above[t]) > 0;
+      const bool both = above[t] > 0 && below[t] > 0;
       if (contact[t] == 1 ? both : opposite) c.cut_class[t] = CutClass::Complete;
     }
     tested_tets += tested;

@@ -684,7 +684,12 @@ Ptr<vtkCellArray> cell_array(const Cells& cells) {
 }
 }  // namespace
 
-void write_tet_mesh(const TetMesh& mesh, const std::string& path) { write_tet_mesh(mesh, path, Compression::ZLib); }
+Compression compression_named(const std::string& name) {
+  if (name == "zlib") return Compression::ZLib;
+  if (name == "lz4") return Compression::LZ4;
+  if (name == "none") return Compression::None;
+  throw Error("unknown compression '" + name + "' (expected zlib, lz4 or none)");
+}
 
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression compression) {
   if (path != "-" && extension_of(path) != ".vtu")
@@ -992,10 +997,6 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
   }
   validate_triangle_mesh(mesh, name, warnings);
   return mesh;
-}
-
-void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path) {
-  write_triangle_mesh(mesh, path, Compression::ZLib);
 }
 
 void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path, Compression compression) {

@@ -27,11 +27,12 @@ int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::s
 ///         read by VTK >= 8.1, so ParaView >= 5.5 (xfem-sweep's frames, written every step);
 ///   None  uncompressed.
 enum class Compression { ZLib, LZ4, None };
+/// The compression of a tool's `--compression` value: "zlib", "lz4" or "none". Throws xfem::Error
+/// for another name.
+Compression compression_named(const std::string& name);
 
-/// Writes `mesh` as VTK XML `.vtu` (appended raw binary, zlib-compressed), atomically.
-void write_tet_mesh(const TetMesh& mesh, const std::string& path);
-/// The same with the given compression.
-void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression compression);
+/// Writes `mesh` as VTK XML `.vtu` (appended raw binary, zlib-compressed unless told), atomically.
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression compression = Compression::ZLib);
 
 /// Reads a triangulated surface (a cut) from `.vtp`, `.vtu` or legacy `.vtk` (POLYDATA or
 /// UNSTRUCTURED_GRID of triangles), `.stl` (coincident points merged), `.obj`, `.off` or gmsh
@@ -47,8 +48,7 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
 void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::vector<std::string>* warnings);
 
 /// Writes `mesh` as VTK XML `.vtp`, or `.vtu` (an unstructured grid of triangles), atomically.
-void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path);
-/// The same with the given compression.
-void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path, Compression compression);
+void write_triangle_mesh(const TriangleMesh& mesh, const std::string& path,
+                         Compression compression = Compression::ZLib);
 
 }  // namespace xfem
