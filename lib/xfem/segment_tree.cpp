@@ -55,15 +55,8 @@ double SegmentTree::nearest_bound2(const Eigen::Vector3d& x) const {
     n = (x - l.centre).norm() - l.radius <= (x - r.centre).norm() - r.radius ? &l : &r;
   }
   double best = std::numeric_limits<double>::infinity();
-  for (int k = n->begin; k < n->end; ++k) best = std::min(best, point_to_segment(x, p0_[k], p1_[k]));
+  for (int k = n->begin; k < n->end; ++k) best = std::min(best, point_segment_distance(x, p0_[k], p1_[k]));
   return best * best;
-}
-
-double SegmentTree::point_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-  const Eigen::Vector3d d = q - p;
-  const double dd = d.squaredNorm();
-  const double t = dd > 0 ? std::clamp((x - p).dot(d) / dd, 0.0, 1.0) : 0.0;
-  return (x - p - t * d).norm();
 }
 
 }  // namespace xfem

@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "xfem/mesh.h"
+
 namespace xfem {
 
 /// A bounding-sphere hierarchy over a list of segments (a balanced binary tree over index ranges,
@@ -31,7 +33,7 @@ class SegmentTree {
   /// The same for the segment pq: the segments that may lie within sqrt(bound2) of it.
   template <class Visit>
   void visit_near(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double& bound2, Visit&& visit) const {
-    walk([&](const Node& n) { return point_to_segment(n.centre, p, q); }, bound2, visit);
+    walk([&](const Node& n) { return point_segment_distance(n.centre, p, q); }, bound2, visit);
   }
 
  private:
@@ -45,7 +47,6 @@ class SegmentTree {
   std::vector<Eigen::Vector3d> p0_, p1_;
 
   int build(const std::vector<Eigen::Vector3d>& p0, const std::vector<Eigen::Vector3d>& p1, int begin, int end);
-  static double point_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q);
 
   // Depth first, left child first (increasing segment index). A node is skipped when its ball is
   // farther than sqrt(bound2): the lower bound is kept a hair below the exact one (1e-9 relative)
