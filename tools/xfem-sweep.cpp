@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "xfem/blas_threads.h"
 #include "xfem/cli.h"
 #include "xfem/cut_surface.h"
 #include "xfem/cut_sweep.h"
@@ -37,6 +38,9 @@ std::string numbered(const std::string& stem, int k, const std::string& ext) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Each step's Schur update (threaded BLAS) is followed by this program's own threads: OpenBLAS's
+  // idle threads must not spin through them (blas_threads.h). First, before any thread starts.
+  xfem::blas_threads_sleep_when_idle();
   auto tool = xfem::cli::make_tool(
       "xfem-sweep",
       "Progressive cutting: the cut of a blade's sweep (a cut surface whose triangles carry the cell array 'time',\n"

@@ -2,12 +2,12 @@
 #include "xfem/cholmod_solver.h"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 
 #include <chrono>
 #include <cmath>
 #include <memory>
 
+#include "xfem/blas_threads.h"
 #include "xfem/seconds_since.h"
 
 namespace xfem {
@@ -18,31 +18,6 @@ namespace {
 // most of all on a busy machine (the organ example's 1,740-DOF solve: 0.11 s wall with the threads,
 // 0.06 s without, docs/PERFORMANCE.md).
 constexpr double kThreadedBlasFlops = 1e9;
-
-// OpenBLAS's thread count for the lifetime of the object, when the BLAS behind CHOLMOD is OpenBLAS
-// (found by name at run time: another BLAS is left alone).
-class BlasThreads {
- public:
-  explicit BlasThreads(int threads) {
-    using Get = int (*)();
-    get_ = reinterpret_cast<Get>(::dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    set_ = reinterpret_cast<Set>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (!get_ || !set_) return;
-    before_ = get_();
-    if (before_ != threads) set_(threads);
-  }
-  ~BlasThreads() {
-    if (set_ && before_ > 0) set_(before_);
-  }
-  BlasThreads(const BlasThreads&) = delete;
-  BlasThreads& operator=(const BlasThreads&) = delete;
-
- private:
-  using Set = void (*)(int);
-  int (*get_)() = nullptr;
-  Set set_ = nullptr;
-  int before_ = 0;
-};
 
 }  // namespace
 
