@@ -57,7 +57,7 @@ namespace {
 // node's 3 components, a branch node's 4 functions: one support) multiplied together with A's
 // columns gathered once for them: A (G, 5,436^2 doubles on the organ) is too large for the caches,
 // and reading a column of it per non-zero of B dominated.
-Eigen::MatrixXd times_sparse(const Eigen::MatrixXd& A, const SparseMatrix& B) {
+Eigen::MatrixXd times_sparse(const Eigen::Ref<const Eigen::MatrixXd>& A, const SparseMatrix& B) {
   const long r = A.rows(), k = B.cols();
   Eigen::MatrixXd V(r, k), Ap, D;
   const int* outer = B.outerIndexPtr();
@@ -157,17 +157,24 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
   m_ = m;
 
   // The new columns of S: K_ee - K_eR G K_Re, one product with G for all of them.
-  const long k = m - m_kept, r = region_size();
+  const long k = m - m_kept;
   if (k > 0) {
+    // Only G's rows up to the last region DOF these columns reach are read: a region ordered by the
+    // step that first reaches a DOF (ProgressiveCut::prepare) puts a sweep's early steps in a small
+    // corner of G.
+    long r = 0;
     std::vector<Eigen::Triplet<double, int>> trip;
     for (long q = 0; q < m; ++q)
-      for (const auto& e : columns_[q].se) trip.emplace_back(in_region_[e.first], static_cast<int>(q), e.second);
+      for (const auto& e : columns_[q].se) {
+        trip.emplace_back(in_region_[e.first], static_cast<int>(q), e.second);
+        r = std::max<long>(r, in_region_[e.first] + 1);
+      }
     SparseMatrix Kr(static_cast<int>(r), static_cast<int>(m));
     Kr.setFromTriplets(trip.begin(), trip.end());
     const SparseMatrix Kr_new = Kr.middleCols(static_cast<int>(m_kept), static_cast<int>(k));
     // The new rows of S, (K_eR G K_Re)(new, all) = (G K_R,new)^T K_Re: dense times sparse twice,
     // both on contiguous columns (the transposed sparse product would gather rows).
-    const Eigen::MatrixXd Vt = times_sparse(G_, Kr_new).transpose();  // k x r
+    const Eigen::MatrixXd Vt = times_sparse(G_.topRows(r), Kr_new).transpose();  // k x r
     const Eigen::MatrixXd Wt = times_sparse(Vt, Kr);                    // k x m: row j = new row m_kept + j
     for (long q = 0; q < m; ++q) S_.col(q).segment(m_kept, k) = -Wt.col(q);
     for (long j = 0; j < k; ++j) {

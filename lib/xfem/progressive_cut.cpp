@@ -324,21 +324,27 @@ ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& opt
 void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
                              const std::function<void(double)>& progress) {
   // The region: free original DOFs of the tets with enriched DOFs at some step (a step's front
-  // enriches tets around it that the whole sweep's cut does not: the union over the steps).
+  // enriches tets around it that the whole sweep's cut does not: the union over the steps), in the
+  // order of the step that first reaches them, so that a step reads only a leading block of the
+  // region's response (IncrementalSchur::update).
   std::vector<int> region;
+  std::vector<char> in_region(body_.free_dofs.size(), 0);
   for (const auto& cut : cuts) {
     if (!cut || cut->mesh().triangles.rows() == 0) continue;
     const EnrichedMesh em = enriched_mesh(body_.mesh, classify(body_.mesh, *cut, options_), cut);
+    const std::size_t first_new = region.size();
     for (int t = 0; t < em.tets(); ++t)
       if (em.size(t) > 4)
         for (int c = 0; c < 4; ++c)
           for (int i = 0; i < 3; ++i) {
             const int f = body_.reduced[3 * em.mesh.tets(t, c) + i];
-            if (f >= 0) region.push_back(f);
+            if (f >= 0 && !in_region[f]) {
+              in_region[f] = 1;
+              region.push_back(f);
+            }
           }
+    std::sort(region.begin() + static_cast<long>(first_new), region.end());
   }
-  std::sort(region.begin(), region.end());
-  region.erase(std::unique(region.begin(), region.end()), region.end());
   schur_.extend_region(region, progress);
 }
 
