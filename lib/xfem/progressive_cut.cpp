@@ -372,15 +372,18 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   }
   // Element matrices: reused where their inputs did not change, computed on a sub-mesh of the others.
   std::vector<int> tets, stale;
-  std::vector<std::vector<double>> keys;
-  for (int t = 0; t < em.tets(); ++t) {
-    if (em.size(t) <= 4) continue;
-    tets.push_back(t);
-    std::vector<double> key = element_key(em, t, ids, boxes, problem.rule == Problem::Rule::Conforming);
-    const auto it = elements_.find(t);
-    if (it == elements_.end() || it->second.key != key) {
-      stale.push_back(t);
-      keys.push_back(std::move(key));
+  for (int t = 0; t < em.tets(); ++t)
+    if (em.size(t) > 4) tets.push_back(t);
+  std::vector<std::vector<double>> all_keys(tets.size()), keys;
+  parallel_for(static_cast<long>(tets.size()), [&](long begin, long end) {
+    for (long i = begin; i < end; ++i)
+      all_keys[i] = element_key(em, tets[i], ids, boxes, problem.rule == Problem::Rule::Conforming);
+  }, {}, 256);
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const auto it = elements_.find(tets[i]);
+    if (it == elements_.end() || it->second.key != all_keys[i]) {
+      stale.push_back(tets[i]);
+      keys.push_back(std::move(all_keys[i]));
     }
   }
   out.enriched_tets = static_cast<long>(tets.size());
@@ -436,65 +439,73 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
         if (em.dofs[e] >= np) incidence[fill[em.dofs[e] - np]++] = {t, static_cast<int>(e - em.offsets[t])};
   }
   const auto key_of = [&](long d, int i) { return (point_of[d] * 5 + function_of[d]) * 3 + i; };
-  std::vector<EnrichedColumn> columns;
-  std::vector<double> g_e;
-  std::vector<double> free_sum(nf, 0.0), enriched_sum(3 * ne, 0.0);
-  std::vector<int> free_rows;
-  std::vector<long> enriched_rows;
-  for (long d = 0; d < ne; ++d)
-    for (int i = 0; i < 3; ++i) {
-      double g = 0;
-      for (long a = first[d]; a < first[d + 1]; ++a) {
-        const int t = incidence[a].first, q = incidence[a].second;
-        const Eigen::MatrixXd& k = elements_.at(t).k;
-        const long base = em.offsets[t];
-        for (int r = 0; r < em.size(t); ++r) {
-          const long row = em.dofs[base + r];
-          for (int j = 0; j < 3; ++j) {
-            const double v = k(3 * r + j, 3 * q + i);
-            if (v == 0) continue;
-            if (row < np) {
-              const long s = 3 * row + j;
-              const int f = body_.reduced[s];
-              if (f < 0) {
-                g -= v * body_.constrained[s];  // the enriched rows' share of K_ec u_c
+  // Column 3 d + i of every enriched DOF, independently of the others: in a few threads, the same bits.
+  std::vector<EnrichedColumn> all(static_cast<std::size_t>(3 * ne));
+  std::vector<double> all_g(static_cast<std::size_t>(3 * ne), 0.0);
+  parallel_for(ne, [&](long begin, long end) {
+    std::vector<double> free_sum(nf, 0.0), enriched_sum(3 * ne, 0.0);
+    std::vector<int> free_rows;
+    std::vector<long> enriched_rows;
+    for (long d = begin; d < end; ++d)
+      for (int i = 0; i < 3; ++i) {
+        double g = 0;
+        for (long a = first[d]; a < first[d + 1]; ++a) {
+          const int t = incidence[a].first, q = incidence[a].second;
+          const Eigen::MatrixXd& k = elements_.at(t).k;
+          const long base = em.offsets[t];
+          for (int r = 0; r < em.size(t); ++r) {
+            const long row = em.dofs[base + r];
+            for (int j = 0; j < 3; ++j) {
+              const double v = k(3 * r + j, 3 * q + i);
+              if (v == 0) continue;
+              if (row < np) {
+                const long s = 3 * row + j;
+                const int f = body_.reduced[s];
+                if (f < 0) {
+                  g -= v * body_.constrained[s];  // the enriched rows' share of K_ec u_c
+                } else {
+                  if (free_sum[f] == 0) free_rows.push_back(f);
+                  free_sum[f] += v;
+                }
               } else {
-                if (free_sum[f] == 0) free_rows.push_back(f);
-                free_sum[f] += v;
+                const long e = 3 * (row - np) + j;
+                if (enriched_sum[e] == 0) enriched_rows.push_back(e);
+                enriched_sum[e] += v;
               }
-            } else {
-              const long e = 3 * (row - np) + j;
-              if (enriched_sum[e] == 0) enriched_rows.push_back(e);
-              enriched_sum[e] += v;
             }
           }
         }
+        EnrichedColumn& column = all[3 * d + i];
+        column.key = key_of(d, i);
+        std::sort(free_rows.begin(), free_rows.end());
+        free_rows.erase(std::unique(free_rows.begin(), free_rows.end()), free_rows.end());
+        for (int f : free_rows) {
+          if (free_sum[f] != 0) column.se.emplace_back(f, free_sum[f]);
+          free_sum[f] = 0;
+        }
+        std::sort(enriched_rows.begin(), enriched_rows.end());
+        enriched_rows.erase(std::unique(enriched_rows.begin(), enriched_rows.end()), enriched_rows.end());
+        for (long e : enriched_rows) {
+          if (enriched_sum[e] != 0) column.ee.emplace_back(key_of(e / 3, static_cast<int>(e % 3)), enriched_sum[e]);
+          enriched_sum[e] = 0;
+        }
+        free_rows.clear();
+        enriched_rows.clear();
+        std::sort(column.ee.begin(), column.ee.end());
+        all_g[3 * d + i] = g;
       }
-      EnrichedColumn column;
-      column.key = key_of(d, i);
-      std::sort(free_rows.begin(), free_rows.end());
-      free_rows.erase(std::unique(free_rows.begin(), free_rows.end()), free_rows.end());
-      for (int f : free_rows) {
-        if (free_sum[f] != 0) column.se.emplace_back(f, free_sum[f]);
-        free_sum[f] = 0;
-      }
-      std::sort(enriched_rows.begin(), enriched_rows.end());
-      enriched_rows.erase(std::unique(enriched_rows.begin(), enriched_rows.end()), enriched_rows.end());
-      for (long e : enriched_rows) {
-        if (enriched_sum[e] != 0) column.ee.emplace_back(key_of(e / 3, static_cast<int>(e % 3)), enriched_sum[e]);
-        enriched_sum[e] = 0;
-      }
-      free_rows.clear();
-      enriched_rows.clear();
-      std::sort(column.ee.begin(), column.ee.end());
-      // A DOF without support (a zero column: xfem-solve fixes it to 0) is left out.
-      if (column.se.empty() && column.ee.empty()) {
-        ++out.unsupported_dofs;
-        continue;
-      }
-      columns.push_back(std::move(column));
-      g_e.push_back(g);
+  }, {}, std::max<long>(64, ne / 8));
+  std::vector<EnrichedColumn> columns;
+  std::vector<double> g_e;
+  for (long c = 0; c < 3 * ne; ++c) {
+    // A DOF without support (a zero column: xfem-solve fixes it to 0) is left out.
+    if (all[c].se.empty() && all[c].ee.empty()) {
+      ++out.unsupported_dofs;
+      continue;
     }
+    columns.push_back(std::move(all[c]));
+    g_e.push_back(all_g[c]);
+  }
   out.enriched_dofs = static_cast<long>(columns.size());
   out.assemble_seconds = seconds_since(t0);
 
