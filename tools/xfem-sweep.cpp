@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <string>
 
@@ -208,43 +209,59 @@ int main(int argc, char** argv) {
       picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
     }
     const xfem::Compression packing = xfem::compression_named(compression);
-    for (int k = 1; k <= steps; ++k) {
-      start = xfem::cli::now();
-      const xfem::CutSolution step = k == steps && last ? std::move(*last) : solve_step(k);
-      const double solved = k == steps && last ? last_solved : xfem::cli::now() - start;
-      const double write_start = xfem::cli::now();
-      const xfem::EnrichedMesh& em = step.em;
-      const xfem::DeformedBody frame = make_frame(step);
-      const double built = xfem::cli::now() - write_start;
-      const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
-      const std::string vtu = numbered("step_", k, ".vtu"), vtp = numbered("step_", k, "_wound.vtp");
-      xfem::write_tet_mesh(frame.volume, (std::filesystem::path(dir) / vtu).string(), packing);
-      xfem::write_triangle_mesh(frame.wound, (std::filesystem::path(dir) / vtp).string(), packing);
-      const double framed = xfem::cli::now() - write_start;  // what xfem-visualize does
+    // A step's frame is built and written in a second thread while the next step is solved: the
+    // frame is a third of a step, and much of it (the split along the cut, the compression, the
+    // files) keeps only one core busy. One frame in flight at most; its picture is rendered here,
+    // in the main thread, which owns VTK's rendering.
+    struct Framed {
+      std::unique_ptr<xfem::CutSolution> step;
+      xfem::DeformedBody frame;
+      double solved = 0, built = 0, written = 0;  // s
+    };
+    const auto write_frame = [&](int k, std::unique_ptr<xfem::CutSolution> step, double solved) {
+      Framed out;
+      const double begin = xfem::cli::now();
+      const xfem::EnrichedMesh& em = step->em;
+      out.frame = make_frame(*step);
+      out.built = xfem::cli::now() - begin;
+      xfem::write_tet_mesh(out.frame.volume, (std::filesystem::path(dir) / numbered("step_", k, ".vtu")).string(), packing);
+      xfem::write_triangle_mesh(out.frame.wound, (std::filesystem::path(dir) / numbered("step_", k, "_wound.vtp")).string(),
+                                packing);
+      out.written = xfem::cli::now() - begin;  // what xfem-visualize does
       if (solutions) {  // with the fingerprints xfem-solve writes, so xfem-visualize/-rmserror can check a frame's inputs
         xfem::Provenance made_for{{"enriched", body_fingerprint}, {"problem", problem_fingerprint}};
         if (em.cut) made_for["cut"] = xfem::fingerprint(em.cut->mesh());
-        xfem::write_vector(step.u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string(),
+        xfem::write_vector(step->u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string(),
                            xfem::provenance_comments(made_for));
       }
       if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      out.step = std::move(step);
+      out.solved = solved;
+      return out;
+    };
+    // A written frame, in the main thread: its picture, its entries in the collection, the progress
+    // line and the report's row (its step_seconds filled in at the end).
+    const auto finish = [&](int k, const Framed& f) {
+      const xfem::CutSolution& step = *f.step;
+      const xfem::EnrichedMesh& em = step.em;
       const double picture_start = xfem::cli::now();
       if (png) {
         picture.title = "t = " + g(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
-        xfem::write_snapshot(frame.volume, frame.wound, (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(),
-                             picture);
+        xfem::write_snapshot(f.frame.volume, f.frame.wound,
+                             (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(), picture);
       }
-      collection.push_back({t[k - 1], 0, vtu});
-      collection.push_back({t[k - 1], 1, vtp});
       const double pictured = png ? xfem::cli::now() - picture_start : 0.0;
-      const double written = xfem::cli::now() - write_start;
+      collection.push_back({t[k - 1], 0, numbered("step_", k, ".vtu")});
+      collection.push_back({t[k - 1], 1, numbered("step_", k, "_wound.vtp")});
+      const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
       xfem::cli::info("step " + std::to_string(k) + "/" + std::to_string(steps) + ", t = " + g(t[k - 1]) + " s: " +
                       std::to_string(triangles) + " cut triangles, " +
                       std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
-                      std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(solved) +
+                      std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(f.solved) +
                       " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
-                      (progressive ? ", incremental Schur " : step.schur_used ? ", Schur " : ", refactorization ") + g(step.solve_seconds) + "), written in " +
-                      g(written) + " s");
+                      (progressive ? ", incremental Schur " : step.schur_used ? ", Schur " : ", refactorization ") +
+                      g(step.solve_seconds) + "), frame written in " + g(f.written) + " s" +
+                      (png ? ", picture in " + g(pictured) + " s" : ""));
       report["steps"].push_back({{"step", k},
                                  {"time", t[k - 1]},
                                  {"cut_triangles", triangles},
@@ -270,16 +287,32 @@ int main(int argc, char** argv) {
                                  {"schur_seconds", step.schur.schur_seconds},
                                  {"dense_seconds", step.schur.dense_seconds},
                                  {"solve_seconds", step.solve_seconds},
-                                 {"seconds", solved},
-                                 {"frame_seconds", framed},
-                                 {"frame_build_seconds", built},
+                                 {"seconds", f.solved},
+                                 {"frame_seconds", f.written},
+                                 {"frame_build_seconds", f.built},
                                  {"schur_columns_seconds", step.incremental.columns_seconds},
                                  {"schur_factor_seconds", step.incremental.factor_seconds},
-                                 {"picture_seconds", pictured},
-                                 {"write_seconds", written}});
+                                 {"picture_seconds", pictured}});
       if (step.unsupported_dofs > 0)
         xfem::cli::detail(std::to_string(step.unsupported_dofs) + " enriched DOFs without support fixed to 0");
+    };
+    // Step k's wall time: from the start of its solution to the start of the next one's (for the
+    // last, to its frame written), its share of the sweep's whole time.
+    std::vector<double> wall(static_cast<std::size_t>(steps), 0.0);
+    std::future<Framed> pending;
+    int pending_k = 0;
+    for (int k = 1; k <= steps; ++k) {
+      start = xfem::cli::now();
+      const bool solved_first = k == steps && last;  // for the pictures' camera, above
+      auto step = solved_first ? std::move(last) : std::make_unique<xfem::CutSolution>(solve_step(k));
+      const double solved = solved_first ? last_solved : xfem::cli::now() - start;
+      if (pending.valid()) finish(pending_k, pending.get());
+      pending = std::async(std::launch::async, write_frame, k, std::move(step), solved);
+      pending_k = k;
+      if (k == steps) finish(pending_k, pending.get());
+      wall[k - 1] = xfem::cli::now() - start;
     }
+    for (int k = 1; k <= steps; ++k) report["steps"][k - 1]["step_seconds"] = wall[k - 1];
     xfem::write_paraview_collection(collection, (std::filesystem::path(dir) / "sweep.pvd").string());
     if (!report_path.empty()) xfem::write_json(report, report_path);
   });

@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # compare.sh OUT STEPS EVERY: for steps EVERY, 2 EVERY, ..., STEPS, runs xfem-classify, -enrich, -assemble,
-# -solve and -visualize from scratch on the sweep's cut of that step (OUT/frames/cut_NNN.vtp), timing the
-# solution (the first four tools) and the frame (xfem-visualize) apart, and prints CSV: step, enriched DOFs,
-# the sweep's time for the step's solution and for its frame files (s, from OUT/sweep.json; the picture
-# left out: the tools make none), the from-scratch times of the same two parts (s), and the ratios
-# sweep / from scratch for the solution and for solution + frame.
+# -solve and -visualize from scratch on the sweep's cut of that step (OUT/timing/cut_NNN.vtp, from the sweep
+# run without pictures, as the tools make none: OUT/timing.json), timing the solution (the first four tools)
+# and the frame (xfem-visualize) apart, and prints CSV: step, enriched DOFs, the sweep's times for the step
+# (s: its solution, its frame files, written in a second thread while the next step is solved, and the
+# step's wall time, its share of the sweep's whole time), the from-scratch times of the solution and the
+# frame (s), and the ratios sweep / from scratch: solution to solution, and the step's wall time to
+# solution + frame.
 set -euo pipefail
 OUT=$1; STEPS=$2; EVERY=$3; B=$BIN
 now() { date +%s.%N; }
-echo "step,enriched_dofs,sweep_solve_seconds,sweep_frame_seconds,scratch_solve_seconds,scratch_frame_seconds,solve_ratio,total_ratio"
+echo "step,enriched_dofs,sweep_solve_seconds,sweep_frame_seconds,sweep_step_seconds,scratch_solve_seconds,scratch_frame_seconds,solve_ratio,total_ratio"
 for ((k = EVERY; k <= STEPS; k += EVERY)); do
-  n=$(printf %03d "$k"); D=$OUT/scratch_$n; C=$OUT/frames/cut_$n.vtp
+  n=$(printf %03d "$k"); D=$OUT/scratch_$n; C=$OUT/timing/cut_$n.vtp
   mkdir -p "$D"
   t0=$(now)
   "$B/xfem-classify" -q "$OUT/organ.vtu" --cut "$C" -o "$D/classified.vtu"
@@ -21,12 +23,12 @@ for ((k = EVERY; k <= STEPS; k += EVERY)); do
   "$B/xfem-visualize" -q "$D/enriched.vtu" --cut "$C" --solution "$D/u.mtx" --problem problem.json \
     -o "$D/deformed.vtu" --faces "$D/wound.vtp"
   t2=$(now)
-  python3 - "$OUT/sweep.json" "$k" "$t0" "$t1" "$t2" <<'PY'
+  python3 - "$OUT/timing.json" "$k" "$t0" "$t1" "$t2" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))["steps"][int(sys.argv[2]) - 1]
 t0, t1, t2 = map(float, sys.argv[3:6])
-solve, frame = s["seconds"], s["frame_seconds"]
-print(f"{s['step']},{s['enriched_dofs']},{solve:.3f},{frame:.3f},{t1 - t0:.3f},{t2 - t1:.3f},"
-      f"{solve / (t1 - t0):.3f},{(solve + frame) / (t2 - t0):.3f}")
+solve, frame, step = s["seconds"], s["frame_seconds"], s["step_seconds"]
+print(f"{s['step']},{s['enriched_dofs']},{solve:.3f},{frame:.3f},{step:.3f},{t1 - t0:.3f},{t2 - t1:.3f},"
+      f"{solve / (t1 - t0):.3f},{step / (t2 - t0):.3f}")
 PY
 done

@@ -69,6 +69,11 @@ grep -q 'compressor="vtkZLibDataCompressor"' "$S/quiet/step_003.vtu" || fail "--
 [ $? -eq 2 ] || fail "--compression gzip must exit 2"
 [ "$(grep -c "<DataSet timestep=" "$S/frames/sweep.pvd")" -eq 10 ] || fail "sweep.pvd: 5 steps x (body, wound)"
 grep -q '"enriched_dofs"' "$S/report.json" || fail "report"
+[ "$(grep -o '"step_seconds"' "$S/report.json" | wc -l)" -eq 5 ] || fail "report: step_seconds per step"
+# A frame that cannot be written (it is written while the next step is solved): a clear error, exit 1.
+mkdir -p "$S/blocked/step_003.vtu"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/blocked" 2>"$S/err.txt"
+[ $? -eq 1 ] && grep -qF "step_003.vtu: cannot rename temporary file" "$S/err.txt" || fail "unwritable frame: $(cat "$S/err.txt")"
 # Pictures: one per step, under xvfb-run as the other pictures.
 if command -v xvfb-run >/dev/null; then
   xvfb-run -a "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/pictures" --png \
