@@ -60,8 +60,11 @@ class IncrementalSchur {
   /// S^-1 r, r and the result indexed like the last update's columns.
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
 
- private:
+  /// Room for m enriched DOFs (S and its factor, m x m each), so that no update up to m moves them:
+  /// a growing S otherwise grows by half, a fresh allocation and copy of both each time.
   void reserve(long m);
+
+ private:
   const CholeskyFactor& A_;
   std::vector<int> region_;       // region position -> free DOF
   std::vector<int> in_region_;    // free DOF -> region position, -1 (sized on first use)

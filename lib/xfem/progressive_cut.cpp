@@ -329,9 +329,11 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
   // region's response (IncrementalSchur::update).
   std::vector<int> region;
   std::vector<char> in_region(body_.free_dofs.size(), 0);
+  long most_enriched = 0;  // scalar enriched DOFs of the largest step: S's size at most
   for (const auto& cut : cuts) {
     if (!cut || cut->mesh().triangles.rows() == 0) continue;
     const EnrichedMesh em = enriched_mesh(body_.mesh, classify(body_.mesh, *cut, options_), cut);
+    most_enriched = std::max(most_enriched, 3 * (em.n - em.np));
     const std::size_t first_new = region.size();
     for (int t = 0; t < em.tets(); ++t)
       if (em.size(t) > 4)
@@ -346,6 +348,7 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
     std::sort(region.begin() + static_cast<long>(first_new), region.end());
   }
   schur_.extend_region(region, progress);
+  schur_.reserve(most_enriched);
 }
 
 CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
