@@ -307,7 +307,6 @@ ExactSplit exact_split(const TetMesh& mesh, int t, bool partial, const std::vect
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (corners[i] - corners[j]).norm());
   const CutPieces pieces = partial ? split_at_front(corners, cut, meeting, front) : split_by_cut(corners, cut, meeting);
-  std::map<std::tuple<double, double, double, int>, int> ids;  // (position, side) -> reference
   // Per point of a partial element: is the field continuous there? Kept, as a point is met once
   // per piece and wound triangle it is a corner of, and the answer costs a search of the cut.
   std::map<std::tuple<double, double, double>, bool> continuous;
@@ -328,14 +327,12 @@ ExactSplit exact_split(const TetMesh& mesh, int t, bool partial, const std::vect
     }
     for (int c = 0; c < 4; ++c)
       if ((side[v[c]] == sd || sd == 0) && corners[c] == x) return v[c];
-    const auto key = std::make_tuple(x.x(), x.y(), x.z(), sd);
-    const auto it = ids.find(key);
-    if (it != ids.end()) return it->second;
-    const int id = -1 - static_cast<int>(out.points.size());
+    // A tet's few dozen points: a scan is quicker than a search tree.
+    for (std::size_t k = 0; k < out.points.size(); ++k)
+      if (out.point_side[k] == sd && out.points[k] == x) return -1 - static_cast<int>(k);
     out.points.push_back(x);
     out.point_side.push_back(sd);
-    ids.emplace(key, id);
-    return id;
+    return -static_cast<int>(out.points.size());
   };
   for (std::size_t i = 0; i < pieces.tets.size(); ++i) {
     const TetCorners& q = pieces.tets[i];
