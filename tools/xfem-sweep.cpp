@@ -175,8 +175,7 @@ int main(int argc, char** argv) {
     };
     const auto make_frame = [&](const xfem::CutSolution& step) {
       const xfem::EnrichedMesh& em = step.em;
-      const xfem::SplitMesh split = em.cut ? xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(),
-                                                              em.front.segments())
+      const xfem::SplitMesh split = em.cut ? xfem::split_mesh(em.mesh, em.side, em.cut_class, *em.cut, em.front.segments())
                                            : xfem::unsplit_mesh(em.mesh, em.side);
       return xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, step.u), problem.E, problem.nu);
     };

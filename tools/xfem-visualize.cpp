@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
     const xfem::SplitMesh split =
         cut_path.empty()    ? xfem::unsplit_mesh(em.mesh, em.side)
         : !em.cuts.empty() ? xfem::split_mesh_several(em)
-                           : xfem::split_mesh(em.mesh, em.side, em.cut_class, em.cut->mesh(), em.front.segments());
+                           : xfem::split_mesh(em.mesh, em.side, em.cut_class, *em.cut, em.front.segments());
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +
                     std::to_string(split.split_partial) + " split behind the front: " +
                     std::to_string(split.tets.rows()) + " tets, " + std::to_string(split.points.rows()) + " points, " +

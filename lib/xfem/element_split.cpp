@@ -18,6 +18,7 @@
 #include "xfem/cut_pieces.h"
 #include "xfem/cut_surface.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 
 namespace xfem {
 namespace {
@@ -80,7 +81,30 @@ struct Splitter {
     const auto key = std::make_pair(a, b);
     const auto it = edges_.find(key);
     if (it != edges_.end()) return it->second;
-    int result = -1;
+    Eigen::Vector3d p;
+    return add_edge(a, b, crossing(a, b, p), p);
+  }
+
+  // Caches the split points of `edges` (a < b each, no repeats), computed in parallel: edge_point
+  // then only looks them up.
+  void add_edges(const std::vector<std::pair<int, int>>& edges) {
+    std::vector<Eigen::Vector3d> points(edges.size());
+    std::vector<char> split(edges.size());
+    parallel_for(static_cast<long>(edges.size()), [&](long begin, long end) {
+      for (long i = begin; i < end; ++i) split[i] = crossing(edges[i].first, edges[i].second, points[i]);
+    }, {}, 64);
+    for (std::size_t i = 0; i < edges.size(); ++i) add_edge(edges[i].first, edges[i].second, split[i], points[i]);
+  }
+
+  int add_edge(int a, int b, bool split, const Eigen::Vector3d& p) {
+    const int result = split ? static_cast<int>(edge_points_.size()) : -1;
+    if (split) edge_points_.push_back(p);
+    edges_.emplace(std::make_pair(a, b), result);
+    return result;
+  }
+
+  // Is edge (a, b), a < b, split, and where (p)? A function of the edge and the cut only.
+  bool crossing(int a, int b, Eigen::Vector3d& p) const {
     if (side_[a] != side_[b] && !triangles_.empty()) {
       const Eigen::Vector3d pa = node(a), pb = node(b), d = pb - pa;
       std::vector<TriangleIterator> hits;
@@ -104,12 +128,11 @@ struct Splitter {
       }
       if (best <= 1.0) {
         best = std::clamp(best, kEdgeClamp, 1.0 - kEdgeClamp);
-        result = static_cast<int>(edge_points_.size());
-        edge_points_.push_back(pa + best * d);
+        p = pa + best * d;
+        return true;
       }
     }
-    edges_.emplace(key, result);
-    return result;
+    return false;
   }
 
   // Index into face_points_ of the point where the cut front pierces face (a, b, c), -1 if none.
@@ -253,10 +276,98 @@ bool planar_inside(const CutSurface& cut, const std::vector<int>& triangles, con
   return true;
 }
 
-}  // namespace
+// A tet split into its exact pieces (cut_pieces.h), its new points numbered on their own: in
+// `tets` and `wound` a reference r >= 0 is a mesh node, r < 0 the new point -1 - r of `points`, in
+// the order in which the tet's pieces and then its wound first use them (the order split_mesh gives
+// them their ids in). It depends on the tet and the cut only, so it is computed for all cut tets in
+// parallel; split_mesh then numbers the new points tet after tet, in tet order.
+struct ExactSplit {
+  bool exact = false;  // false: a completely cut tet with the cut planar inside (split face by face)
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> point_side;
+  std::vector<std::array<int, 4>> tets;
+  std::vector<int> tet_side;
+  std::vector<std::array<int, 3>> wound;
+  std::vector<int> wound_side;
+};
 
-SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
-                     const TriangleMesh& cut, const std::vector<FrontSegment>& front) {
+// An element the front passes through (`partial`), or one the cut separates but not in one plane (a
+// fold inside it): its exact pieces, the wound being the cut triangles clipped to it. Their points
+// are its own.
+ExactSplit exact_split(const TetMesh& mesh, int t, bool partial, const std::vector<int>& side, const CutSurface& cut,
+                       const std::vector<FrontSegment>& front) {
+  ExactSplit out;
+  const std::array<int, 4> v = {mesh.tets(t, 0), mesh.tets(t, 1), mesh.tets(t, 2), mesh.tets(t, 3)};
+  TetCorners corners;
+  for (int c = 0; c < 4; ++c) corners[c] = mesh.points.row(v[c]).transpose();
+  const std::vector<int> meeting = cut.triangles_meeting(corners);
+  if (!partial && planar_inside(cut, meeting, corners)) return out;
+  out.exact = true;
+  double parent_edge = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (corners[i] - corners[j]).norm());
+  const CutPieces pieces = partial ? split_at_front(corners, cut, meeting, front) : split_by_cut(corners, cut, meeting);
+  // Per point of a partial element: is the field continuous there? Kept, as a point is met once
+  // per piece and wound triangle it is a corner of, and the answer costs a search of the cut.
+  std::map<std::tuple<double, double, double>, bool> continuous;
+  auto id_of = [&](const Eigen::Vector3d& x, int sd) {
+    // In an element the front passes through, only points on the cut behind the front have
+    // a copy per side; elsewhere (the front, the cut's plane ahead of it, off the cut) the
+    // field is continuous and the pieces share one point.
+    if (partial && sd != 0) {
+      const auto key = std::make_tuple(x.x(), x.y(), x.z());
+      auto it = continuous.find(key);
+      if (it == continuous.end()) {
+        bool on_front = false;
+        for (const FrontSegment& f : front)
+          on_front = on_front || point_segment_distance(x, f.p0, f.p1) <= 1e-12 * parent_edge;
+        it = continuous.emplace(key, on_front || cut.closest(x).distance > 1e-12 * parent_edge).first;
+      }
+      if (it->second) sd = 0;
+    }
+    for (int c = 0; c < 4; ++c)
+      if ((side[v[c]] == sd || sd == 0) && corners[c] == x) return v[c];
+    // A tet's few dozen points: a scan is quicker than a search tree.
+    for (std::size_t k = 0; k < out.points.size(); ++k)
+      if (out.point_side[k] == sd && out.points[k] == x) return -1 - static_cast<int>(k);
+    out.points.push_back(x);
+    out.point_side.push_back(sd);
+    return -static_cast<int>(out.points.size());
+  };
+  for (std::size_t i = 0; i < pieces.tets.size(); ++i) {
+    const TetCorners& q = pieces.tets[i];
+    const int sd = pieces.side[i];
+    std::array<int, 4> ids4;
+    for (int c = 0; c < 4; ++c) ids4[c] = id_of(q[c], sd);
+    out.tets.push_back(ids4);
+    out.tet_side.push_back(sd);
+  }
+  // The wound: the cut's triangles clipped to the element, once per side, each oriented out
+  // of its side's pieces (towards the other side).
+  const TriangleMesh& cm = cut.mesh();
+  for (const int f : meeting) {
+    const std::vector<Eigen::Vector3d> polygon =
+        clip_triangle(corners, cm.points.row(cm.triangles(f, 0)).transpose(),
+                      cm.points.row(cm.triangles(f, 1)).transpose(), cm.points.row(cm.triangles(f, 2)).transpose());
+    if (!(polygon_area(polygon) > kDegenerate * parent_edge * parent_edge)) continue;
+    const Eigen::Vector3d n = cut.unit_normal(f);
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+      for (int sd : {1, -1}) {
+        std::array<int, 3> w = {id_of(polygon[0], sd), id_of(polygon[i], sd), id_of(polygon[i + 1], sd)};
+        const Eigen::Vector3d normal = (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
+        if (normal.norm() <= kDegenerate * parent_edge * parent_edge) continue;
+        if (sd * normal.dot(n) > 0) std::swap(w[1], w[2]);
+        out.wound.push_back(w);
+        out.wound_side.push_back(sd);
+      }
+  }
+  return out;
+}
+
+// split_mesh with the cut's CutSurface `given` by the caller, or built here from `cut` when an
+// element is cut (null: none given).
+SplitMesh split(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
+                const TriangleMesh& cut, const CutSurface* given, const std::vector<FrontSegment>& front) {
   const int np = static_cast<int>(mesh.points.rows()), nt = static_cast<int>(mesh.tets.rows());
   if (static_cast<int>(side.size()) != np)
     throw Error("split_mesh: " + std::to_string(side.size()) + " point sides for " + std::to_string(np) + " points");
@@ -271,7 +382,39 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
                   ", expected 0, 1 or 2");
 
   Splitter s(mesh, side, cut, front);
-  std::unique_ptr<CutSurface> cut_surface;  // built on the first folded element
+  // The cut tets' exact pieces, each on its own and so in parallel (parallel_for.h): most of the
+  // work on a curved cut. Small chunks, as the cost of a tet varies with the cut inside it.
+  std::vector<int> cut_tets;
+  for (int t = 0; t < nt; ++t)
+    if (cut_class[t] > 0) cut_tets.push_back(t);
+  std::unique_ptr<CutSurface> built;
+  if (!given && !cut_tets.empty()) built = std::make_unique<CutSurface>(cut);
+  const CutSurface* cut_surface = given ? given : built.get();
+  std::vector<ExactSplit> exact(cut_tets.size());
+  parallel_for(static_cast<long>(cut_tets.size()), [&](long begin, long end) {
+    for (long i = begin; i < end; ++i)
+      exact[i] = exact_split(mesh, cut_tets[i], cut_class[cut_tets[i]] == 1, side, *cut_surface, front);
+  }, {}, 8);
+  // The split points of the cut tets' edges between nodes of opposite sides, in parallel too.
+  std::vector<std::pair<int, int>> edges;
+  for (const int t : cut_tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const int a = mesh.tets(t, i), b = mesh.tets(t, j);
+        if (side[a] != side[b]) edges.emplace_back(std::min(a, b), std::max(a, b));
+      }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  s.add_edges(edges);
+  // Uncut tets are kept whole, turned positive: their orientations too, in parallel.
+  std::vector<char> inverted(nt, 0);
+  parallel_for(nt, [&](long begin, long end) {
+    for (long t = begin; t < end; ++t)
+      if (cut_class[t] == 0)
+        inverted[t] = signed_volume(s.node(mesh.tets(t, 0)), s.node(mesh.tets(t, 1)), s.node(mesh.tets(t, 2)),
+                                    s.node(mesh.tets(t, 3))) < 0;
+  });
+  std::size_t next_exact = 0;  // exact[next_exact] is the next cut tet's, in tet order
   // Each node's field is evaluated in the first tet that holds it.
   std::vector<int> node_tet(np, -1);
   for (int t = nt - 1; t >= 0; --t)
@@ -280,6 +423,19 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
   SplitMesh out;
   std::vector<std::array<int, 4>> tets;
   std::vector<std::array<int, 3>> wound;
+  // Room for about every tet and point, so that the arrays are seldom copied as they grow (a cut tet
+  // split face by face makes a few cone tets per face).
+  std::size_t room = nt, new_points = 0;
+  for (const ExactSplit& e : exact) {
+    room += e.exact ? e.tets.size() : 12;
+    new_points += e.exact ? e.points.size() : 16;
+  }
+  tets.reserve(room);
+  out.parent.reserve(room);
+  out.tet_side.reserve(room);
+  s.points_.reserve(new_points);
+  s.point_side_.reserve(new_points);
+  s.point_tet_.reserve(new_points);
   auto position = [&](int id) -> Eigen::Vector3d {
     return id < np ? s.node(id) : s.points_[id - np];
   };
@@ -296,89 +452,53 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
   static const int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   for (int t = 0; t < nt; ++t) {
     const std::array<int, 4> v = {mesh.tets(t, 0), mesh.tets(t, 1), mesh.tets(t, 2), mesh.tets(t, 3)};
+    if (cut_class[t] == 0) {  // kept whole (as add_tet would)
+      tets.push_back(inverted[t] ? std::array<int, 4>{v[0], v[2], v[1], v[3]} : v);
+      out.parent.push_back(t);
+      out.tet_side.push_back(0);
+      continue;
+    }
     bool any_split = false;
     bool closed = true;  // every edge between nodes of opposite sides is split
     Eigen::Vector3d edge_sum = Eigen::Vector3d::Zero();
     int edge_count = 0;
-    if (cut_class[t] > 0)
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) {
-          if (side[v[i]] == side[v[j]]) continue;
-          const int e = s.edge_point(v[i], v[j]);
-          if (e < 0) {
-            closed = false;
-            continue;
-          }
-          any_split = true;
-          edge_sum += s.edge_points_[e];
-          ++edge_count;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        if (side[v[i]] == side[v[j]]) continue;
+        const int e = s.edge_point(v[i], v[j]);
+        if (e < 0) {
+          closed = false;
+          continue;
         }
+        any_split = true;
+        edge_sum += s.edge_points_[e];
+        ++edge_count;
+      }
     parent_volume = std::abs(signed_volume(s.node(v[0]), s.node(v[1]), s.node(v[2]), s.node(v[3])));
     parent_edge = 0.0;
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) parent_edge = std::max(parent_edge, (s.node(v[i]) - s.node(v[j])).norm());
 
     // An element the front passes through, or one the cut separates but not in one plane (a fold
-    // inside it): its exact pieces (cut_pieces.h), the wound being the cut triangles clipped to it.
-    // Their points are its own.
+    // inside it): its exact pieces, computed above (also, unused, for a completely cut element
+    // whose edges are split only in part); here its new points get their ids.
     const bool partial = cut_class[t] == 1;
-    if (partial || (cut_class[t] == 2 && (closed || !any_split))) {
-      if (!cut_surface) cut_surface = std::make_unique<CutSurface>(cut);
-      TetCorners corners;
-      for (int c = 0; c < 4; ++c) corners[c] = s.node(v[c]);
-      const std::vector<int> meeting = cut_surface->triangles_meeting(corners);
-      if (partial || !planar_inside(*cut_surface, meeting, corners)) {
-        const CutPieces pieces = partial ? split_at_front(corners, *cut_surface, meeting, front)
-                                         : split_by_cut(corners, *cut_surface, meeting);
-        std::map<std::tuple<double, double, double, int>, int> ids;  // (position, side) -> output id
-        auto id_of = [&](const Eigen::Vector3d& x, int sd) {
-          // In an element the front passes through, only points on the cut behind the front have
-          // a copy per side; elsewhere (the front, the cut's plane ahead of it, off the cut) the
-          // field is continuous and the pieces share one point.
-          if (partial && sd != 0) {
-            bool on_front = false;
-            for (const FrontSegment& f : front)
-              on_front = on_front || point_segment_distance(x, f.p0, f.p1) <= 1e-12 * parent_edge;
-            if (on_front || cut_surface->closest(x).distance > 1e-12 * parent_edge) sd = 0;
-          }
-          for (int c = 0; c < 4; ++c)
-            if ((side[v[c]] == sd || sd == 0) && s.node(v[c]) == x) return v[c];
-          const auto key = std::make_tuple(x.x(), x.y(), x.z(), sd);
-          const auto it = ids.find(key);
-          if (it != ids.end()) return it->second;
-          const int id = s.add_point(x, sd, t);
-          ids.emplace(key, id);
-          return id;
-        };
-        for (std::size_t i = 0; i < pieces.tets.size(); ++i) {
-          const TetCorners& q = pieces.tets[i];
-          const int sd = pieces.side[i];
-          std::array<int, 4> ids4;
-          for (int c = 0; c < 4; ++c) ids4[c] = id_of(q[c], sd);
-          add_tet(ids4, t, sd);
-        }
-        // The wound: the cut's triangles clipped to the element, once per side, each oriented out
-        // of its side's pieces (towards the other side).
-        const TriangleMesh& cm = cut_surface->mesh();
-        for (const int f : meeting) {
-          const std::vector<Eigen::Vector3d> polygon =
-              clip_triangle(corners, cm.points.row(cm.triangles(f, 0)).transpose(),
-                            cm.points.row(cm.triangles(f, 1)).transpose(), cm.points.row(cm.triangles(f, 2)).transpose());
-          if (!(polygon_area(polygon) > kDegenerate * parent_edge * parent_edge)) continue;
-          const Eigen::Vector3d n = cut_surface->unit_normal(f);
-          for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
-            for (int sd : {1, -1}) {
-              std::array<int, 3> w = {id_of(polygon[0], sd), id_of(polygon[i], sd), id_of(polygon[i + 1], sd)};
-              const Eigen::Vector3d normal = (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
-              if (normal.norm() <= kDegenerate * parent_edge * parent_edge) continue;
-              if (sd * normal.dot(n) > 0) std::swap(w[1], w[2]);
-              wound.push_back(w);
-              out.wound_side.push_back(sd);
-            }
-        }
-        ++(partial ? out.split_partial : out.split_complete);
-        continue;
+    const ExactSplit* pieces = &exact[next_exact++];
+    if (partial || ((closed || !any_split) && pieces->exact)) {
+      const int first = np + static_cast<int>(s.points_.size());
+      for (std::size_t k = 0; k < pieces->points.size(); ++k) s.add_point(pieces->points[k], pieces->point_side[k], t);
+      auto id = [&](int r) { return r >= 0 ? r : first - 1 - r; };
+      for (std::size_t i = 0; i < pieces->tets.size(); ++i) {
+        const std::array<int, 4>& q = pieces->tets[i];
+        add_tet({id(q[0]), id(q[1]), id(q[2]), id(q[3])}, t, pieces->tet_side[i]);
       }
+      for (std::size_t i = 0; i < pieces->wound.size(); ++i) {
+        const std::array<int, 3>& w = pieces->wound[i];
+        wound.push_back({id(w[0]), id(w[1]), id(w[2])});
+        out.wound_side.push_back(pieces->wound_side[i]);
+      }
+      ++(partial ? out.split_partial : out.split_complete);
+      continue;
     }
     if (!any_split) {
       add_tet(v, t, 0);
@@ -481,6 +601,18 @@ SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const st
     for (int c = 0; c < 3; ++c) out.wound(static_cast<Eigen::Index>(i), c) = wound[i][c];
   out.degenerate_faces = static_cast<int>(s.degenerate_.size());
   return out;
+}
+
+}  // namespace
+
+SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
+                     const TriangleMesh& cut, const std::vector<FrontSegment>& front) {
+  return split(mesh, side, cut_class, cut, nullptr, front);
+}
+
+SplitMesh split_mesh(const TetMesh& mesh, const std::vector<int>& side, const std::vector<int>& cut_class,
+                     const CutSurface& cut, const std::vector<FrontSegment>& front) {
+  return split(mesh, side, cut_class, cut.mesh(), &cut, front);
 }
 
 SplitMesh unsplit_mesh(const TetMesh& mesh, const std::vector<int>& side) {

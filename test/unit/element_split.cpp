@@ -6,6 +6,9 @@
 #include <set>
 
 #include "xfem/box_mesh.h"
+#include "xfem/classification.h"
+#include "xfem/cut_generation.h"
+#include "xfem/cut_surface.h"
 #include "xfem/error.h"
 #include "mesh_checks.h"
 
@@ -264,4 +267,104 @@ TEST_CASE("element_split: sides and classes that do not fit the mesh are errors"
   side[5] = 1;
   cut_class[4] = 3;
   CHECK_THROWS_WITH(xfem::split_mesh(m, side, cut_class, cut.surface(), {}), Contains("tet 4 has cut class 3"));
+}
+
+namespace {
+
+// Sides, classes and front of `m` against `cut` as xfem-classify decides them.
+struct Classified {
+  std::vector<int> side, cut_class;
+  std::vector<xfem::FrontSegment> front;
+};
+Classified classified(const xfem::TetMesh& m, const xfem::CutSurface& cut) {
+  const xfem::Classification c = xfem::classify(m, cut);
+  Classified out{c.side, {}, c.front.segments()};
+  for (const xfem::CutClass k : c.cut_class) out.cut_class.push_back(static_cast<int>(k));
+  return out;
+}
+
+// Checks that split_mesh splits every cut tet of `m` as it splits that tet alone: split_mesh works
+// on the cut tets in parallel (parallel_for.h) and numbers their points afterwards, in tet order;
+// a tet alone is split on one thread. Compared: each output tet's corners (positions, and sides
+// of the points), side and parent, in order, and the wound. Also: the overload given the
+// CutSurface gives the same result.
+void check_split_as_alone(const xfem::TetMesh& m, const xfem::CutSurface& cut, int min_partial) {
+  const Classified c = classified(m, cut);
+  const auto s = xfem::split_mesh(m, c.side, c.cut_class, cut.mesh(), c.front);
+  const auto given = xfem::split_mesh(m, c.side, c.cut_class, cut, c.front);
+  CHECK(given.points == s.points);
+  CHECK(given.point_side == s.point_side);
+  CHECK(given.point_tet == s.point_tet);
+  CHECK(given.tets == s.tets);
+  CHECK(given.parent == s.parent);
+  CHECK(given.tet_side == s.tet_side);
+  CHECK(given.wound == s.wound);
+  CHECK(given.wound_side == s.wound_side);
+  // Enough cut tets for several chunks of work on several threads.
+  CHECK(s.split_complete > 100);
+  CHECK(s.split_partial >= min_partial);
+
+  int next_tet = 0, next_wound = 0, cut_tets = 0;
+  std::vector<int> first_user(s.points.rows(), -1);  // per point: the first tet whose pieces or wound use it
+  for (int t = 0; t < m.tets.rows(); ++t) {
+    CAPTURE(t);
+    // The tet alone, its nodes numbered in the order of their numbers in m (quads on faces are
+    // split along the diagonal from their lowest-numbered node).
+    xfem::TetMesh one;
+    one.points.resize(4, 3);
+    one.tets.resize(1, 4);
+    std::vector<int> side(4);
+    for (int k = 0; k < 4; ++k) {
+      int rank = 0;
+      for (int l = 0; l < 4; ++l) rank += m.tets(t, l) < m.tets(t, k);
+      one.points.row(rank) = m.points.row(m.tets(t, k));
+      one.tets(0, k) = rank;
+      side[rank] = c.side[m.tets(t, k)];
+    }
+    const auto a = xfem::split_mesh(one, side, {c.cut_class[t]}, cut, c.front);
+    if (c.cut_class[t] > 0) ++cut_tets;
+    for (int i = 0; i < a.tets.rows(); ++i, ++next_tet) {
+      REQUIRE(next_tet < s.tets.rows());
+      CHECK(s.parent[next_tet] == t);
+      CHECK(s.tet_side[next_tet] == a.tet_side[i]);
+      for (int k = 0; k < 4; ++k) {
+        CHECK(point(s, s.tets(next_tet, k)) == point(a, a.tets(i, k)));
+        CHECK(s.point_side[s.tets(next_tet, k)] == a.point_side[a.tets(i, k)]);
+        if (first_user[s.tets(next_tet, k)] < 0) first_user[s.tets(next_tet, k)] = t;
+      }
+    }
+    for (int w = 0; w < a.wound.rows(); ++w, ++next_wound) {
+      REQUIRE(next_wound < s.wound.rows());
+      CHECK(s.wound_side[next_wound] == a.wound_side[w]);
+      for (int k = 0; k < 3; ++k) {
+        CHECK(point(s, s.wound(next_wound, k)) == point(a, a.wound(w, k)));
+        if (first_user[s.wound(next_wound, k)] < 0) first_user[s.wound(next_wound, k)] = t;
+      }
+    }
+  }
+  // A new point's field is evaluated in the first tet that uses it (the one that made it).
+  for (int k = static_cast<int>(m.points.rows()); k < s.points.rows(); ++k)
+    if (first_user[k] >= 0) CHECK(s.point_tet[k] == first_user[k]);
+  CHECK(next_tet == s.tets.rows());
+  CHECK(next_wound == s.wound.rows());
+  CHECK(cut_tets == s.split_complete + s.split_partial);
+}
+
+}  // namespace
+
+TEST_CASE("element_split: a folded cut splits each element as it splits it alone, in parallel or given the CutSurface",
+          "[element_split]") {
+  // Five folds through a box of 6^3 cubes: elements with a fold inside (exact pieces) and elements
+  // crossed by one flat strip (split face by face), the cut reaching past the box on every side.
+  const auto m = xfem::box_mesh({6, 6, 6}, {0, 0, 0}, {1, 1, 1});
+  const xfem::CutSurface cut(xfem::cut_zigzag({-0.2, -0.2}, {1.2, 1.2}, 0.47, 0.1, 5, 3));
+  check_split_as_alone(m, cut, 0);
+}
+
+TEST_CASE("element_split: a partial curved cut splits each element as it splits it alone, in parallel or given the "
+          "CutSurface", "[element_split]") {
+  // A sinusoidal sheet whose front x = 0.63 runs through the box: elements split behind the front.
+  const auto m = xfem::box_mesh({6, 6, 6}, {0, 0, 0}, {1, 1, 1});
+  const xfem::CutSurface cut(xfem::cut_sine({-0.2, -0.2}, {0.63, 1.2}, 0.47, 0.05, 0.4, {16, 6}));
+  check_split_as_alone(m, cut, 10);
 }
