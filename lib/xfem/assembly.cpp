@@ -12,6 +12,7 @@
 #include "xfem/consistent_gradients.h"
 #include "xfem/several_cuts.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 #include "xfem/pieces.h"
 #include "xfem/tet_shape.h"
 #include "xfem/seconds_since.h"
@@ -222,20 +223,32 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   s.standard_tets += tets - static_cast<long>(enriched.size());
   s.standard_seconds += seconds_since(clock);
   clock = std::chrono::steady_clock::now();
-  Eigen::MatrixXd k;
   // The conforming rule (conforming_quadrature.h) splits the cut elements once, then integrates
   // every enriched tet on its own points; otherwise the oversampling `rule`.
   const CutElementSplits splits = conforming_order > 0 ? split_cut_elements(em) : CutElementSplits();
-  PointRule points;
-  FaceIntegralCache faces;  // each face's integrals computed once for its two tets
-  for (std::size_t i = 0; i < enriched.size(); ++i) {
-    if (conforming_order > 0) {
-      conforming_rule(em, splits, enriched[i], conforming_order, points);
-      element_stiffness_at_points(em, enriched[i], points, material, k, conforming_order, &faces);
-    } else {
-      element_stiffness(em, enriched[i], rule, material, k);
-    }
-    scatter(em, p, outer, enriched[i], k, values);
+  // Element matrices in a few threads, a batch at a time, then added to K in the tets' order.
+  // Each run of `chunk` consecutive tets shares one face-integral cache (a face's integrals
+  // computed once for its two tets when both are in the run): the runs do not depend on the
+  // thread count, so neither does K, bit for bit.
+  const long chunk = 32, batch = 32 * chunk;
+  std::vector<Eigen::MatrixXd> ks(static_cast<std::size_t>(std::min<long>(batch, static_cast<long>(enriched.size()))));
+  for (long first = 0; first < static_cast<long>(enriched.size()); first += batch) {
+    const long count = std::min<long>(batch, static_cast<long>(enriched.size()) - first);
+    parallel_for(count, [&](long begin, long end) {
+      PointRule points;
+      FaceIntegralCache faces;
+      for (long i = begin; i < end; ++i) {
+        const int t = enriched[static_cast<std::size_t>(first + i)];
+        if (conforming_order > 0) {
+          conforming_rule(em, splits, t, conforming_order, points);
+          element_stiffness_at_points(em, t, points, material, ks[i], conforming_order, &faces);
+        } else {
+          element_stiffness(em, t, rule, material, ks[i]);
+        }
+      }
+    }, {}, chunk);
+    for (long i = 0; i < count; ++i) scatter(em, p, outer, enriched[static_cast<std::size_t>(first + i)], ks[i], values);
+    if (progress) progress(static_cast<double>(tets - static_cast<long>(enriched.size()) + first + count) / tets);
   }
   s.enriched_tets += static_cast<long>(enriched.size());
   s.enriched_seconds += seconds_since(clock);
