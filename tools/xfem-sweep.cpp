@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <string>
 
+#include "xfem/background_queue.h"
 #include "xfem/blas_threads.h"
 #include "xfem/cli.h"
 #include "xfem/cut_surface.h"
@@ -208,11 +208,14 @@ int main(int argc, char** argv) {
       picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
     }
     const xfem::Compression packing = xfem::compression_named(compression);
-    // A step's frame is built and written in a second thread while the next step is solved: the
-    // frame is a third of a step, and much of it (the split along the cut, the compression, the
-    // files) keeps only one core busy. One frame in flight at most; its picture is rendered here,
-    // in the main thread, which owns VTK's rendering.
+    // A step's frame is built and written in the background while the next steps are solved
+    // (BackgroundQueue: a worker thread at the lowest priority, on the CPU the steps leave idle;
+    // at the same priority it would slow every parallel section of the steps). The frame is a
+    // third of a step, and much of it (the split along the cut, the compression, the files)
+    // keeps only one core busy. Its picture is rendered in the main thread, which owns VTK's
+    // rendering.
     struct Framed {
+      int k = 0;
       std::unique_ptr<xfem::CutSolution> step;
       xfem::DeformedBody frame;
       double solved = 0, built = 0, written = 0;  // s
@@ -234,13 +237,15 @@ int main(int argc, char** argv) {
                            xfem::provenance_comments(made_for));
       }
       if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      out.k = k;
       out.step = std::move(step);
       out.solved = solved;
       return out;
     };
     // A written frame, in the main thread: its picture, its entries in the collection, the progress
     // line and the report's row (its step_seconds filled in at the end).
-    const auto finish = [&](int k, const Framed& f) {
+    const auto finish = [&](const Framed& f) {
+      const int k = f.k;
       const xfem::CutSolution& step = *f.step;
       const xfem::EnrichedMesh& em = step.em;
       const double picture_start = xfem::cli::now();
@@ -296,19 +301,24 @@ int main(int argc, char** argv) {
         xfem::cli::detail(std::to_string(step.unsupported_dofs) + " enriched DOFs without support fixed to 0");
     };
     // Step k's wall time: from the start of its solution to the start of the next one's (for the
-    // last, to its frame written), its share of the sweep's whole time.
+    // last, to every frame written), its share of the sweep's whole time.
     std::vector<double> wall(static_cast<std::size_t>(steps), 0.0);
-    std::future<Framed> pending;
-    int pending_k = 0;
+    // Declared after everything its tasks use: its destructor waits for a running one.
+    xfem::BackgroundQueue<Framed> frames;
+    // More frames waiting than this and the main thread builds the oldest itself: the worker has
+    // fallen behind (a loaded machine), and unwritten frames hold their steps' solutions.
+    const std::size_t most_waiting = 2;
     for (int k = 1; k <= steps; ++k) {
       start = xfem::cli::now();
       const bool solved_first = k == steps && last;  // for the pictures' camera, above
       auto step = solved_first ? std::move(last) : std::make_unique<xfem::CutSolution>(solve_step(k));
       const double solved = solved_first ? last_solved : xfem::cli::now() - start;
-      if (pending.valid()) finish(pending_k, pending.get());
-      pending = std::async(std::launch::async, write_frame, k, std::move(step), solved);
-      pending_k = k;
-      if (k == steps) finish(pending_k, pending.get());
+      auto task = std::make_shared<std::unique_ptr<xfem::CutSolution>>(std::move(step));
+      frames.push([&write_frame, k, task, solved] { return write_frame(k, std::move(*task), solved); });
+      while (frames.waiting() > most_waiting) frames.run_oldest_waiting();
+      while (frames.ready()) finish(frames.take());
+      if (k == steps)
+        while (frames.size() > 0) finish(frames.take());
       wall[k - 1] = xfem::cli::now() - start;
     }
     for (int k = 1; k <= steps; ++k) report["steps"][k - 1]["step_seconds"] = wall[k - 1];
