@@ -62,22 +62,45 @@ void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int
   enriched_basis(em, t, tet_shape(em.mesh, t), x, side, out);
 }
 
+namespace {
+// Whether tet t has only its 4 nodes' original DOFs (most tets of a body): its field is the linear
+// one, evaluated below without the enriched basis's allocations, in the same order and so to the
+// same bits. With several cuts enriched_basis dispatches elsewhere: not taken then.
+bool plain_tet(const EnrichedMesh& em, int t) {
+  if (!em.cuts.empty() || em.size(t) != 4) return false;
+  for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
+    if (em.dofs[e] >= em.np) return false;
+  return true;
+}
+}  // namespace
+
 Eigen::Vector3d displacement_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
                                 const Eigen::VectorXd& u) {
+  const long begin = em.offsets[t];
+  if (plain_tet(em, t)) {
+    const Eigen::Vector4d N = tet_shape(em.mesh, t).values(x);
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) value += N[em.local[begin + k]] * u.segment<3>(3 * em.dofs[begin + k]);
+    return value;
+  }
   BasisAt b;
   enriched_basis(em, t, x, side, b);
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
-  const long begin = em.offsets[t];
   for (int k = 0; k < b.N.size(); ++k) value += b.N[k] * u.segment<3>(3 * em.dofs[begin + k]);
   return value;
 }
 
 Eigen::Matrix3d displacement_gradient_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
                                          const Eigen::VectorXd& u) {
+  const long begin = em.offsets[t];
+  Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
+  if (plain_tet(em, t)) {
+    const TetShape shape = tet_shape(em.mesh, t);
+    for (int k = 0; k < 4; ++k) grad += u.segment<3>(3 * em.dofs[begin + k]) * shape.grad.row(em.local[begin + k]);
+    return grad;
+  }
   BasisAt b;
   enriched_basis(em, t, x, side, b);
-  Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
-  const long begin = em.offsets[t];
   for (int k = 0; k < b.N.size(); ++k) grad += u.segment<3>(3 * em.dofs[begin + k]) * b.dN.row(k);
   return grad;
 }
