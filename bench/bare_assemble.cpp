@@ -2,13 +2,16 @@
 // Floor for xfem-assemble (issue 9, docs/PERFORMANCE.md): the same element matrices, in memory, no
 // file I/O in the timed part. Reads the enriched mesh and problem.json first (untimed), takes the
 // sparsity pattern of K from one untimed call of the library, then times
-//   loop:    element_stiffness(t) for every tet + scatter of its lower triangle into K's values
+// Element matrices by problem.json's rule, as xfem-assemble computes them by default: the
+// cut-conforming rule (the cut elements split once per pass, then each enriched tet on its own
+// points, face integrals shared between the two tets of a face) or the paper's oversampling.
+//   loop:    the element matrix of every tet + scatter of its lower triangle into K's values
 //            (rows found by binary search in the column) — a plain loop, none of assembly.cpp's
 //            tricks (block tables, closed-form direct scatter);
 //   compute: the same element matrices without the scatter (a checksum keeps them alive);
 //   library: xfem::stiffness_matrix as xfem-assemble calls it (pattern + element loop + scatter).
 // Prints the minimum over REPEATS of each as one JSON line on stdout.
-// Usage: bare_assemble ENRICHED.vtu CUT PROBLEM.json [POINTS=problem's] [REPEATS=3]
+// Usage: bare_assemble ENRICHED.vtu CUT PROBLEM.json [POINTS=0: problem's rule] [REPEATS=3]
 // (CUT may be "" for a plain mesh.)
 #include <Eigen/Dense>
 #include <algorithm>
@@ -19,6 +22,8 @@
 #include <vector>
 
 #include "xfem/assembly.h"
+#include "xfem/conforming_quadrature.h"
+#include "xfem/consistent_gradients.h"
 #include "xfem/element_stiffness.h"
 #include "xfem/enriched_mesh.h"
 #include "xfem/error.h"
@@ -43,19 +48,37 @@ int main(int argc, char** argv) {
     const int repeats = argc > 5 ? std::max(1, std::atoi(argv[5])) : 3;
     const xfem::Lame material = xfem::lame(problem.E, problem.nu);
     const xfem::Quadrature rule = xfem::oversampling_quadrature(points, problem.refine);
-    xfem::SparseMatrix K = xfem::stiffness_matrix(em, material, rule);  // the pattern (untimed)
+    // POINTS given: the oversampling rule with them (as xfem-assemble --points); else problem.json's rule.
+    const int order = problem.rule == xfem::Problem::Rule::Conforming && !(argc > 4 && std::atoi(argv[4]) > 0)
+                          ? problem.order
+                          : 0;
+    xfem::SparseMatrix K = xfem::stiffness_matrix(em, material, rule, nullptr, {}, order);  // the pattern (untimed)
+    // One pass over the tets' element matrices, each handed to `use`.
+    xfem::PointRule at;
+    const auto each_element = [&](const auto& use) {
+      const xfem::CutElementSplits splits = order > 0 ? xfem::split_cut_elements(em) : xfem::CutElementSplits();
+      xfem::FaceIntegralCache faces;
+      Eigen::MatrixXd k;
+      for (int t = 0; t < em.tets(); ++t) {
+        if (order > 0 && em.size(t) > 4) {
+          xfem::conforming_rule(em, splits, t, order, at);
+          xfem::element_stiffness_at_points(em, t, at, material, k, order, &faces);
+        } else {
+          xfem::element_stiffness(em, t, rule, material, k);
+        }
+        use(t, k);
+      }
+    };
     const auto* outer = K.outerIndexPtr();
     const auto* inner = K.innerIndexPtr();
     double* values = K.valuePtr();
 
     double best_loop = 1e300, best_compute = 1e300, best_library = 1e300, checksum = 0.0;
-    Eigen::MatrixXd k;
     std::vector<long> g;  // scalar DOF of each row/column of k
     for (int r = 0; r < repeats; ++r) {
       auto t0 = std::chrono::steady_clock::now();
       std::fill(values, values + K.nonZeros(), 0.0);
-      for (int t = 0; t < em.tets(); ++t) {
-        xfem::element_stiffness(em, t, rule, material, k);
+      each_element([&](int t, const Eigen::MatrixXd& k) {
         const int m = em.size(t);
         g.resize(3 * m);
         for (int a = 0; a < m; ++a)
@@ -66,22 +89,19 @@ int main(int argc, char** argv) {
           const auto* last = inner + outer[col + 1];
           for (int row = 0; row < 3 * m; ++row) {
             if (g[row] < col) continue;
-            const auto* at = std::lower_bound(first, last, g[row]);
-            values[at - inner] += k(row, c);
+            const auto* found = std::lower_bound(first, last, g[row]);
+            values[found - inner] += k(row, c);
           }
         }
-      }
+      });
       best_loop = std::min(best_loop, since(t0));
 
       t0 = std::chrono::steady_clock::now();
-      for (int t = 0; t < em.tets(); ++t) {
-        xfem::element_stiffness(em, t, rule, material, k);
-        checksum += k.trace();
-      }
+      each_element([&](int, const Eigen::MatrixXd& k) { checksum += k.trace(); });
       best_compute = std::min(best_compute, since(t0));
 
       t0 = std::chrono::steady_clock::now();
-      const xfem::SparseMatrix L = xfem::stiffness_matrix(em, material, rule);
+      const xfem::SparseMatrix L = xfem::stiffness_matrix(em, material, rule, nullptr, {}, order);
       best_library = std::min(best_library, since(t0));
       checksum += L.nonZeros();
     }

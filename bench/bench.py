@@ -360,8 +360,9 @@ def report(cases, mach, runs, args):
              "chose, on the same files: bench/bare_cholmod (analyse + factor + solve), or bench/bare_petsc under "
              "mpirun on as many ranks (MatLoad, elimination, GAMG setup + CG; uncut systems only: the field split "
              "of cut systems has no bare twin), whole process and library part. Assemble: bench/bare_assemble, "
-             "the same element matrices in memory; the floor is the faster of its element loop without scatter "
-             "and the library's stiffness_matrix (pattern + loop + scatter), compared with the tool's own "
+             "the same element matrices in memory (problem.json's rule, the cut-conforming one by default), one "
+             "thread; the floor is the faster of its element loop without scatter and the library's "
+             "stiffness_matrix (pattern + loop + scatter, enriched tets in threads), compared with the tool's own "
              "reported assembly time (pattern + plain + enriched tets) and with its whole wall time. Every "
              "stage: `cat` of the bytes it reads and writes (I/O floor; the next table).")
     L.append("")
