@@ -211,9 +211,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   std::vector<int> enriched;
   clock = std::chrono::steady_clock::now();
   for (int t = 0; t < tets; ++t) {
-    bool plain = em.size(t) == 4;
-    for (long e = em.offsets[t]; plain && e < em.offsets[t + 1]; ++e) plain = em.dofs[e] < em.np;
-    if (!plain) {
+    if (!em.plain(t)) {
       enriched.push_back(t);
       continue;
     }

@@ -32,9 +32,7 @@ void element_stiffness(const EnrichedMesh& em, int t, const Quadrature& rule, co
                        Eigen::MatrixXd& k) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t);
-  bool plain = n == 4;
-  for (int c = 0; plain && c < n; ++c) plain = em.dofs[em.offsets[t] + c] < em.np;
-  if (plain) {
+  if (em.plain(t)) {
     k = tet_stiffness(shape, material);
     return;
   }

@@ -63,21 +63,16 @@ void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int
 }
 
 namespace {
-// Whether tet t has only its 4 nodes' original DOFs (most tets of a body): its field is the linear
-// one, evaluated below without the enriched basis's allocations, in the same order and so to the
-// same bits. With several cuts enriched_basis dispatches elsewhere: not taken then.
-bool plain_tet(const EnrichedMesh& em, int t) {
-  if (!em.cuts.empty() || em.size(t) != 4) return false;
-  for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
-    if (em.dofs[e] >= em.np) return false;
-  return true;
-}
+// A plain tet (most tets of a body) has the linear field, evaluated below without the enriched
+// basis's allocations, in the same order and so to the same bits. With several cuts
+// enriched_basis dispatches elsewhere: not taken then.
+bool linear_field(const EnrichedMesh& em, int t) { return em.cuts.empty() && em.plain(t); }
 }  // namespace
 
 Eigen::Vector3d displacement_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
                                 const Eigen::VectorXd& u) {
   const long begin = em.offsets[t];
-  if (plain_tet(em, t)) {
+  if (linear_field(em, t)) {
     const Eigen::Vector4d N = tet_shape(em.mesh, t).values(x);
     Eigen::Vector3d value = Eigen::Vector3d::Zero();
     for (int k = 0; k < 4; ++k) value += N[em.local[begin + k]] * u.segment<3>(3 * em.dofs[begin + k]);
@@ -94,7 +89,7 @@ Eigen::Matrix3d displacement_gradient_at(const EnrichedMesh& em, int t, const Ei
                                          const Eigen::VectorXd& u) {
   const long begin = em.offsets[t];
   Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
-  if (plain_tet(em, t)) {
+  if (linear_field(em, t)) {
     const TetShape shape = tet_shape(em.mesh, t);
     for (int k = 0; k < 4; ++k) grad += u.segment<3>(3 * em.dofs[begin + k]) * shape.grad.row(em.local[begin + k]);
     return grad;

@@ -49,6 +49,13 @@ struct EnrichedMesh {
   int tets() const { return static_cast<int>(mesh.tets.rows()); }
   /// Number of entries of C for tet t (4 for a plain element).
   int size(int t) const { return static_cast<int>(offsets[t + 1] - offsets[t]); }
+  /// Whether tet t has only its 4 nodes' original DOFs: a linear element, whatever the cut.
+  bool plain(int t) const {
+    if (size(t) != 4) return false;
+    for (long e = offsets[t]; e < offsets[t + 1]; ++e)
+      if (dofs[e] >= np) return false;
+    return true;
+  }
 };
 
 /// Reads enriched.vtu (`vtu`) and the cut (`cut_path`) and checks the contract of
