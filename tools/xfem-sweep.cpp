@@ -162,7 +162,8 @@ int main(int argc, char** argv) {
     const auto solve_step = [&](int k) {
       auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
       try {
-        if (progressive) return progressive->step(cut, xfem::cut_until_ids(times, t[k - 1]));
+        // The original DOFs' last solve is left to the frame, built off the steps' path (below).
+        if (progressive) return progressive->step(cut, xfem::cut_until_ids(times, t[k - 1]), false);
         return xfem::solve_cut(body, cut, {},
                                solver == "schur"      ? xfem::CutSolver::Schur
                                : solver == "refactor" ? xfem::CutSolver::Refactor
@@ -186,6 +187,7 @@ int main(int argc, char** argv) {
     if (png) {
       start = xfem::cli::now();
       last = std::make_unique<xfem::CutSolution>(solve_step(steps));
+      xfem::complete_solution(body, *last);
       last_solved = xfem::cli::now() - start;
       const xfem::DeformedBody frame = make_frame(*last);
       // The incremental solver's step K follows step K - 1 like every other step: solve it again there.
@@ -224,6 +226,7 @@ int main(int argc, char** argv) {
       Framed out;
       const double begin = xfem::cli::now();
       const xfem::EnrichedMesh& em = step->em;
+      xfem::complete_solution(body, *step);
       out.frame = make_frame(*step);
       out.built = xfem::cli::now() - begin;
       xfem::write_tet_mesh(out.frame.volume, (std::filesystem::path(dir) / numbered("step_", k, ".vtu")).string(), packing);
@@ -308,6 +311,10 @@ int main(int argc, char** argv) {
     // More frames waiting than this and the main thread builds the oldest itself: the worker has
     // fallen behind (a loaded machine), and unwritten frames hold their steps' solutions.
     const std::size_t most_waiting = 2;
+    // The steps' BLAS (the Schur factor's update) on one thread: threaded, its master spins on
+    // sched_yield while it waits for its helper, and both take the core the frames and the next
+    // step's element matrices need (steps 10 % faster on 2 cores, docs/PERFORMANCE.md).
+    const xfem::BlasThreads steps_blas(1);
     for (int k = 1; k <= steps; ++k) {
       start = xfem::cli::now();
       const bool solved_first = k == steps && last;  // for the pictures' camera, above

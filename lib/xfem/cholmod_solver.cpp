@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <mutex>
 
 #include "xfem/blas_threads.h"
 #include "xfem/seconds_since.h"
@@ -25,6 +26,7 @@ constexpr double kThreadedBlasFlops = 1e9;
 struct CholeskyFactor::Impl {
   cholmod_common c;
   cholmod_factor* L = nullptr;
+  std::mutex solving;  // a solve uses c's workspace: one at a time
   Impl() { cholmod_start(&c); }
   ~Impl() {
     if (L) cholmod_free_factor(&L, &c);
@@ -117,6 +119,7 @@ Eigen::MatrixXd CholeskyFactor::solve(const Eigen::MatrixXd& B) const {
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
   // The factor is not modified by a solve, but CHOLMOD's workspace lives in the common.
+  const std::lock_guard<std::mutex> lock(impl_->solving);
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->L, &rhs, &impl_->c);
   if (!x) throw Error("CHOLMOD solve failed (status " + std::to_string(impl_->c.status) + ")");
   Eigen::MatrixXd X = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), B.rows(), B.cols());

@@ -46,7 +46,8 @@ class CholeskyFactor {
   CholeskyFactor& operator=(const CholeskyFactor&) = delete;
 
   long size() const;
-  /// A^-1 B for every column of B at once (one pass over the factor per call).
+  /// A^-1 B for every column of B at once (one pass over the factor per call). Safe to call from
+  /// several threads: the calls take turns (CHOLMOD's workspace is shared).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
 
   std::string ordering;          ///< "metis" or "amd": the one used

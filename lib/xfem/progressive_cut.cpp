@@ -351,7 +351,17 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
   schur_.reserve(most_enriched);
 }
 
-CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids) {
+void complete_solution(const UncutBody& body, CutSolution& solution) {
+  if (solution.pending.size() == 0) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Eigen::VectorXd x = body.factor->solve(solution.pending).col(0);
+  for (std::size_t i = 0; i < body.free_dofs.size(); ++i) solution.u[body.free_dofs[i]] -= x[static_cast<long>(i)];
+  solution.pending.resize(0);
+  if (!solution.u.allFinite()) throw Error("the Schur complement solve gave a non-finite solution (numerically singular)");
+  solution.pending_seconds = seconds_since(t0);
+}
+
+CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids, bool complete) {
   CutSolution out;
   out.schur_used = true;
   classify_and_enrich(body_, cut, options_, out, &classifier_, &ids, &faces_);
@@ -523,16 +533,14 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
     r[c] = v;
   }
   const Eigen::VectorXd u_e = m > 0 ? schur_.solve(r) : Eigen::VectorXd();
-  Eigen::VectorXd u_s = body_.w;
-  if (m > 0) {
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nf, 1);
-    for (long c = 0; c < m; ++c)
-      for (const auto& e : columns[c].se) b(e.first, 0) += e.second * u_e[c];
-    u_s -= body_.factor->solve(b).col(0);
-  }
   out.u = Eigen::VectorXd::Zero(3 * em.n);
   out.u.head(3 * np) = body_.constrained;
-  for (long i = 0; i < nf; ++i) out.u[body_.free_dofs[i]] = u_s[i];
+  for (long i = 0; i < nf; ++i) out.u[body_.free_dofs[i]] = body_.w[i];
+  if (m > 0) {  // u_s = w - A^-1 b: now, or by complete_solution
+    out.pending = Eigen::VectorXd::Zero(nf);
+    for (long c = 0; c < m; ++c)
+      for (const auto& e : columns[c].se) out.pending[e.first] += e.second * u_e[c];
+  }
   // Enriched scalar DOF 3 np + 3 d + i has key key_of(d, i); supported ones in `columns` order.
   std::unordered_map<long, long> column_of;
   for (long c = 0; c < m; ++c) column_of[columns[c].key] = c;
@@ -542,6 +550,7 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
       if (it != column_of.end()) out.u[3 * np + 3 * d + i] = u_e[it->second];
     }
   if (!out.u.allFinite()) throw Error("the Schur complement solve gave a non-finite solution (numerically singular)");
+  if (complete) complete_solution(body_, out);
   out.solve_seconds = seconds_since(t0);
   return out;
 }

@@ -72,7 +72,17 @@ struct CutSolution {
   double keys_seconds = 0;         ///< ProgressiveCut, part of assemble_seconds: which element matrices to compute
   double elements_seconds = 0;     ///< ProgressiveCut, part of assemble_seconds: computing them
   IncrementalSchurStats incremental;  ///< ProgressiveCut: what the Schur complement's update did
+  /// ProgressiveCut::step with complete = false: the load b that the enriched DOFs put on the free
+  /// original DOFs (reduced indices), whose response A^-1 b is still to be subtracted from u there
+  /// (complete_solution). Empty when u is complete.
+  Eigen::VectorXd pending;
+  double pending_seconds = 0;      ///< complete_solution: the time its solve took
 };
+
+/// Completes a solution ProgressiveCut::step left incomplete: u_s -= A^-1 pending with body's
+/// factor (one solve), pending cleared. Does nothing to a complete one. Safe to run in another
+/// thread than the steps (CholeskyFactor::solve). Throws xfem::Error for a non-finite result.
+void complete_solution(const UncutBody& body, CutSolution& solution);
 
 /// Classifies the body against `cut`, numbers the DOFs, assembles only the tets with enriched DOFs
 /// (their K_ee, K_es; f_e = 0 since loads act on original DOFs) and solves by block elimination
@@ -105,7 +115,10 @@ class ProgressiveCut {
 
   /// Solves the cut `cut` whose triangle k is triangle `ids[k]` of the sweep (the identity of a
   /// triangle from step to step: cut_until keeps the sweep's order). Throws xfem::Error as solve_cut.
-  CutSolution step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids);
+  /// With complete = false the last solve, which only the original DOFs' displacements need and no
+  /// later step does, is left to complete_solution (CutSolution::pending): a caller that draws the
+  /// frame in another thread takes it off the steps' path.
+  CutSolution step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids, bool complete = true);
 
  private:
   struct Element {

@@ -185,16 +185,28 @@ TEST_CASE("progressive cut: every step of a sweep equals the whole system's solu
     INFO("integration '" << integration << "', region prepared " << prepared);
     const xfem::Problem p = xfem::parse_problem(xfem::Json::parse("{" + conditions + integration + "}"), "p.json");
     const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
-    xfem::ProgressiveCut sweeping(body);
+    // `sweeping` leaves the last solve to complete_solution (as xfem-sweep, which completes it with
+    // the frame in another thread); `twin`, with the same history, completes every step itself.
+    xfem::ProgressiveCut sweeping(body), twin(body);
     if (prepared) {
       sweeping.prepare(all);
+      twin.prepare(all);
       CHECK(sweeping.region_size() > 0);
     }
     long reused_tets = 0, kept_dofs = 0;
     for (int k : order) {
       INFO("step " << k + 1);
       const auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k]));
-      const xfem::CutSolution step = sweeping.step(cut, xfem::cut_until_ids(times, t[k]));
+      // Left incomplete, then completed: the same bits as the complete step.
+      xfem::CutSolution step = sweeping.step(cut, xfem::cut_until_ids(times, t[k]), false);
+      CHECK(step.pending.size() == static_cast<long>(body.free_dofs.size()));
+      const Eigen::VectorXd before = step.u;
+      xfem::complete_solution(body, step);
+      CHECK(step.pending.size() == 0);
+      CHECK(step.u != before);
+      const xfem::CutSolution complete = twin.step(cut, xfem::cut_until_ids(times, t[k]));
+      CHECK(complete.pending.size() == 0);
+      CHECK(step.u == complete.u);
       const xfem::CutSolution whole = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Refactor);
       REQUIRE(step.u.size() == whole.u.size());
       CHECK(step.enriched_dofs == whole.enriched_dofs);
