@@ -306,15 +306,16 @@ int main(int argc, char** argv) {
     // Step k's wall time: from the start of its solution to the start of the next one's (for the
     // last, to every frame written), its share of the sweep's whole time.
     std::vector<double> wall(static_cast<std::size_t>(steps), 0.0);
+    // The steps' and the frames' BLAS on one thread each (IncrementalSchur::update splits its
+    // products between threads of ours): OpenBLAS's own threads would have their caller spin on
+    // sched_yield while it waits for them, on the core the frames and the next step's element
+    // matrices need. Declared before the frames: it is restored only once no frame task runs.
+    const xfem::BlasThreads steps_blas(1);
     // Declared after everything its tasks use: its destructor waits for a running one.
     xfem::BackgroundQueue<Framed> frames;
     // More frames waiting than this and the main thread builds the oldest itself: the worker has
     // fallen behind (a loaded machine), and unwritten frames hold their steps' solutions.
     const std::size_t most_waiting = 2;
-    // The steps' BLAS (the Schur factor's update) on one thread: threaded, its master spins on
-    // sched_yield while it waits for its helper, and both take the core the frames and the next
-    // step's element matrices need (steps 10 % faster on 2 cores, docs/PERFORMANCE.md).
-    const xfem::BlasThreads steps_blas(1);
     for (int k = 1; k <= steps; ++k) {
       start = xfem::cli::now();
       const bool solved_first = k == steps && last;  // for the pictures' camera, above

@@ -16,7 +16,11 @@ BlasThreads::BlasThreads(int threads) {
     return;
   }
   before_ = get();
-  if (before_ != threads) set_(threads);
+  if (before_ == threads) {
+    set_ = nullptr;  // nothing to restore: another thread's BLAS call is not disturbed
+    return;
+  }
+  set_(threads);
 }
 
 BlasThreads::~BlasThreads() {

@@ -4,7 +4,9 @@
 namespace xfem {
 
 /// OpenBLAS's thread count for the lifetime of the object, when the BLAS behind CHOLMOD and LAPACK
-/// is OpenBLAS (found by name at run time: another BLAS is left alone).
+/// is OpenBLAS (found by name at run time: another BLAS is left alone). The count is process-wide:
+/// an object that finds it already right changes nothing, then or at its end, so it may be made
+/// while another thread calls BLAS.
 class BlasThreads {
  public:
   explicit BlasThreads(int threads);

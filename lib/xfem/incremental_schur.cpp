@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "xfem/blas_threads.h"
 #include "xfem/error.h"
+#include "xfem/parallel_for.h"
 #include "xfem/seconds_since.h"
 
 // LAPACK / BLAS (OpenBLAS behind CHOLMOD): the bordered Cholesky update is O(p^2 k) for p kept
@@ -15,6 +17,9 @@ void dtrsm_(const char* side, const char* uplo, const char* transa, const char* 
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* beta, double* c, const int* ldc);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 }
 
@@ -195,22 +200,47 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
   // block S(p:, p:) - L(p:, :p) L(p:, :p)^T factorized.
   t0 = std::chrono::steady_clock::now();
   const int ld = static_cast<int>(L_.rows());
+  // The two O(p^2 k) and O(t^2 p) products in a few threads of ours, each block on one BLAS
+  // thread: OpenBLAS's own threads would have its caller spin on sched_yield while it waits for
+  // them (the core the frames want, xfem-sweep). The blocks do not depend on the thread count, so
+  // neither do the bits.
+  const BlasThreads one_blas_thread(1);
   if (k > 0 && p > 0) {
     Eigen::MatrixXd X = S_.block(0, m_kept, p, k);
-    const int pi = static_cast<int>(p), ki = static_cast<int>(k);
-    const double one = 1.0;
-    dtrsm_("L", "L", "N", "N", &pi, &ki, &one, L_.data(), &ld, X.data(), &pi);
+    const int pi = static_cast<int>(p);
+    const long block = std::max<long>(64, (k + 1) / 2);  // columns of X per triangular solve: two wide ones
+    parallel_for((k + block - 1) / block, [&](long begin, long end) {
+      for (long b = begin; b < end; ++b) {
+        const int ki = static_cast<int>(std::min(block, k - b * block));
+        const double one = 1.0;
+        dtrsm_("L", "L", "N", "N", &pi, &ki, &one, L_.data(), &ld, X.data() + b * block * p, &pi);
+      }
+    }, {}, 1);
     L_.block(m_kept, 0, k, p) = X.transpose();
   }
   const long t = m - p;
   st.refactored = t;
   if (t > 0) {
     L_.block(p, p, t, t) = S_.block(p, p, t, t);
-    const int ti = static_cast<int>(t), pi = static_cast<int>(p);
     if (p > 0) {
-      const double minus = -1.0, one = 1.0;
-      dsyrk_("L", "N", &ti, &pi, &minus, &L_(p, 0), &ld, &one, &L_(p, p), &ld);
+      // L(p:, p:) -= L(p:, :p) L(p:, :p)^T, lower triangle, with the rows split in halves a, b:
+      // [aa; ba bb] -= [A A^T; B A^T, B B^T]: the two triangles in one thread, the square in the other.
+      const int pi = static_cast<int>(p), ha = static_cast<int>(t / 2), hb = static_cast<int>(t - t / 2);
+      double* A = &L_(p, 0);
+      double* B = &L_(p + ha, 0);
+      parallel_for(2, [&](long begin, long end) {
+        const double minus = -1.0, one = 1.0;
+        for (long task = begin; task < end; ++task) {
+          if (task == 0) {
+            if (ha > 0) dsyrk_("L", "N", &ha, &pi, &minus, A, &ld, &one, &L_(p, p), &ld);
+            dsyrk_("L", "N", &hb, &pi, &minus, B, &ld, &one, &L_(p + ha, p + ha), &ld);
+          } else if (ha > 0) {
+            dgemm_("N", "T", &hb, &ha, &pi, &minus, B, &ld, A, &ld, &one, &L_(p + ha, p), &ld);
+          }
+        }
+      }, {}, 1);
     }
+    const int ti = static_cast<int>(t);
     int info = 0;
     dpotrf_("L", &ti, &L_(p, p), &ld, &info);
     if (info != 0)

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <dlfcn.h>
 #include <sys/resource.h>
 
 #include <Eigen/Dense>
@@ -38,4 +39,28 @@ TEST_CASE("after blas_threads_sleep_when_idle, BLAS still computes and its idle 
   const double before = cpu_seconds();
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   CHECK(cpu_seconds() - before < 0.02);
+}
+
+TEST_CASE("BlasThreads sets OpenBLAS's thread count for its lifetime, and leaves a right count alone", "[blas]") {
+  using Get = int (*)();
+  using Set = void (*)(int);
+  const auto get = reinterpret_cast<Get>(::dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  const auto set = reinterpret_cast<Set>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (!get || !set) return;  // another BLAS: nothing to set
+  const int before = get();
+  set(2);
+  {
+    const xfem::BlasThreads one(1);
+    CHECK(get() == 1);
+    {
+      // Already 1: it changes nothing, now or at its end (xfem-sweep's frame thread may be in a BLAS
+      // call meanwhile), so the outer object's count holds after it.
+      const xfem::BlasThreads again(1);
+      CHECK(get() == 1);
+      set(2);  // as if someone else changed it meanwhile: `again` must not set it back
+    }
+    CHECK(get() == 2);
+  }
+  CHECK(get() == 2);
+  set(before);
 }
