@@ -189,10 +189,6 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
         if (it != position_.end()) S_(a, it->second) += e.second;
       }
     }
-    // The new columns by symmetry: above the new rows, and the new block's upper triangle.
-    S_.block(0, m_kept, m_kept, k) = S_.block(m_kept, 0, k, m_kept).transpose();
-    for (long a = m_kept; a < m; ++a)
-      for (long i = m_kept; i < a; ++i) S_(i, a) = S_(a, i);
   }
   st.columns_seconds = seconds_since(t0);
 
@@ -206,17 +202,17 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
   // neither do the bits.
   const BlasThreads one_blas_thread(1);
   if (k > 0 && p > 0) {
-    Eigen::MatrixXd X = S_.block(0, m_kept, p, k);
+    // L(new, :p) = S(new, :p) L(:p, :p)^-T, in place, by blocks of rows.
+    L_.block(m_kept, 0, k, p) = S_.block(m_kept, 0, k, p);
     const int pi = static_cast<int>(p);
-    const long block = std::max<long>(64, (k + 1) / 2);  // columns of X per triangular solve: two wide ones
+    const long block = std::max<long>(64, (k + 1) / 2);  // rows per triangular solve: two wide ones
     parallel_for((k + block - 1) / block, [&](long begin, long end) {
       for (long b = begin; b < end; ++b) {
-        const int ki = static_cast<int>(std::min(block, k - b * block));
+        const int rows = static_cast<int>(std::min(block, k - b * block));
         const double one = 1.0;
-        dtrsm_("L", "L", "N", "N", &pi, &ki, &one, L_.data(), &ld, X.data() + b * block * p, &pi);
+        dtrsm_("R", "L", "T", "N", &rows, &pi, &one, L_.data(), &ld, &L_(m_kept + b * block, 0), &ld);
       }
     }, {}, 1);
-    L_.block(m_kept, 0, k, p) = X.transpose();
   }
   const long t = m - p;
   st.refactored = t;

@@ -71,7 +71,7 @@ class IncrementalSchur {
   Eigen::MatrixXd G_;             // A^-1, region x region
   std::vector<EnrichedColumn> columns_;  // S's order
   std::unordered_map<long, long> position_;  // key -> S position
-  Eigen::MatrixXd S_, L_;         // S (both triangles) and its lower Cholesky factor; capacity >= m_
+  Eigen::MatrixXd S_, L_;         // S (its lower triangle; the upper one is left stale) and its lower Cholesky factor; capacity >= m_
   long m_ = 0;
   std::vector<long> caller_;      // last update: caller index -> S position
 };
