@@ -353,12 +353,10 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
 
 void complete_solution(const UncutBody& body, CutSolution& solution) {
   if (solution.pending.size() == 0) return;
-  const auto t0 = std::chrono::steady_clock::now();
   const Eigen::VectorXd x = body.factor->solve(solution.pending).col(0);
   for (std::size_t i = 0; i < body.free_dofs.size(); ++i) solution.u[body.free_dofs[i]] -= x[static_cast<long>(i)];
   solution.pending.resize(0);
   if (!solution.u.allFinite()) throw Error("the Schur complement solve gave a non-finite solution (numerically singular)");
-  solution.pending_seconds = seconds_since(t0);
 }
 
 CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const std::vector<int>& ids, bool complete) {

@@ -76,7 +76,6 @@ struct CutSolution {
   /// original DOFs (reduced indices), whose response A^-1 b is still to be subtracted from u there
   /// (complete_solution). Empty when u is complete.
   Eigen::VectorXd pending;
-  double pending_seconds = 0;      ///< complete_solution: the time its solve took
 };
 
 /// Completes a solution ProgressiveCut::step left incomplete: u_s -= A^-1 pending with body's
