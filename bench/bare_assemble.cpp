@@ -21,14 +21,14 @@
 #include <string>
 #include <vector>
 
-#include "xfem/assembly.h"
-#include "xfem/conforming_quadrature.h"
-#include "xfem/consistent_gradients.h"
-#include "xfem/element_stiffness.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/error.h"
-#include "xfem/oversampling_quadrature.h"
-#include "xfem/problem.h"
+#include "xfem/system/assembly.h"
+#include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/integrate/consistent_gradients.h"
+#include "xfem/integrate/element_stiffness.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/integrate/oversampling_quadrature.h"
+#include "xfem/system/problem.h"
 
 namespace {
 double since(std::chrono::steady_clock::time_point t0) {

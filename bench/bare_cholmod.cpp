@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Baseline for xfem-solve --backend cholmod: the same system/ directory, read by the same reader,
 // Dirichlet DOFs eliminated in a plain loop, then the bare CHOLMOD calls with the settings of
-// lib/xfem/cholmod_solver.cpp (supernodal, METIS, postorder). Prints the timings on stdout as
+// lib/xfem/solve/cholmod_solver.cpp (supernodal, METIS, postorder). Prints the timings on stdout as
 // one JSON line. Usage: bare_cholmod SYSTEM_DIR [amd]
 #include <cholmod.h>
 
@@ -10,7 +10,7 @@
 #include <cstring>
 #include <vector>
 
-#include "xfem/linear_system.h"
+#include "xfem/system/linear_system.h"
 
 namespace {
 double since(std::chrono::steady_clock::time_point t0) {

@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "xfem/linear_system.h"
+#include "xfem/system/linear_system.h"
 
 namespace {
 double since(std::chrono::steady_clock::time_point t0) {

@@ -6,8 +6,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "xfem/box_mesh.h"
-#include "xfem/linear_system.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/system/linear_system.h"
 
 namespace xfem::bench {
 

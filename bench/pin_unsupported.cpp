@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <exception>
 
-#include "xfem/dirichlet.h"
-#include "xfem/linear_system.h"
+#include "xfem/system/dirichlet.h"
+#include "xfem/system/linear_system.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

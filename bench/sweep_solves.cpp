@@ -6,9 +6,9 @@
 #include <chrono>
 #include <cstdio>
 
-#include "xfem/problem.h"
-#include "xfem/progressive_cut.h"
-#include "xfem/vtk_io.h"
+#include "xfem/system/problem.h"
+#include "xfem/progressive/progressive_cut.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

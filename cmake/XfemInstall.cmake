@@ -8,7 +8,7 @@ set(XFEM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/xfem)
 install(TARGETS xfem EXPORT xfemTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/xfem/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/xfem
   FILES_MATCHING PATTERN "*.h")
-install(FILES ${PROJECT_BINARY_DIR}/lib/generated/xfem/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/xfem)
+install(FILES ${PROJECT_BINARY_DIR}/lib/generated/xfem/core/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/xfem/core)
 install(EXPORT xfemTargets NAMESPACE xfem:: DESTINATION ${XFEM_CMAKE_DIR})
 # The library is static: its private dependencies (CGAL, VTK, CHOLMOD, PETSc; gmsh is loaded at run time) are linked by
 # the consumer, so the config finds them again (with our Find modules for the two without one).

@@ -14,12 +14,12 @@
 #include <map>
 #include <string>
 
-#include "xfem/error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/linear_system.h"
-#include "xfem/matrix_market.h"
-#include "xfem/problem.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/system/linear_system.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/system/problem.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 

@@ -7,16 +7,16 @@
 #include <filesystem>
 #include <string>
 
-#include "xfem/assembly.h"
-#include "xfem/cli.h"
-#include "xfem/error.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/fingerprint.h"
-#include "xfem/linear_system.h"
-#include "xfem/problem.h"
-#include "xfem/several_cuts.h"
-#include "xfem/reactions.h"
-#include "xfem/version.h"
+#include "xfem/system/assembly.h"
+#include "xfem/core/cli.h"
+#include "xfem/core/error.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/system/linear_system.h"
+#include "xfem/system/problem.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/system/reactions.h"
+#include "xfem/core/version.h"
 
 namespace {
 std::string fixed3(double v) {

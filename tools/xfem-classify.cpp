@@ -3,14 +3,14 @@
 #include <memory>
 #include <string>
 
-#include "xfem/classification.h"
-#include "xfem/cli.h"
-#include "xfem/error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/json_io.h"
-#include "xfem/several_cuts.h"
-#include "xfem/version.h"
-#include "xfem/vtk_io.h"
+#include "xfem/enrich/classification.h"
+#include "xfem/core/cli.h"
+#include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/core/json_io.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/core/version.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(

@@ -2,12 +2,12 @@
 // Numbers the DOFs of a classified mesh and builds each element's extended connectivity (paper 3.3).
 #include <string>
 
-#include "xfem/cli.h"
-#include "xfem/crack_front.h"
-#include "xfem/dof_numbering.h"
-#include "xfem/error.h"
-#include "xfem/several_cuts.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/cli.h"
+#include "xfem/geometry/crack_front.h"
+#include "xfem/enrich/dof_numbering.h"
+#include "xfem/core/error.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(

@@ -6,14 +6,14 @@
 #include <sstream>
 #include <string>
 
-#include "xfem/atomic_file.h"
-#include "xfem/cli.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/error.h"
-#include "xfem/matrix_market.h"
-#include "xfem/problem.h"
-#include "xfem/several_cuts.h"
-#include "xfem/stress_intensity.h"
+#include "xfem/core/atomic_file.h"
+#include "xfem/core/cli.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/system/problem.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/fracture/stress_intensity.h"
 
 namespace {
 

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <vector>
 
-#include "xfem/box_mesh.h"
-#include "xfem/cli.h"
-#include "xfem/cut_generation.h"
-#include "xfem/cut_sweep.h"
-#include "xfem/error.h"
-#include "xfem/organ_shape.h"
-#include "xfem/unstructured_mesh.h"
-#include "xfem/vtk_io.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/cli.h"
+#include "xfem/generate/cut_generation.h"
+#include "xfem/generate/cut_sweep.h"
+#include "xfem/core/error.h"
+#include "xfem/generate/organ_shape.h"
+#include "xfem/generate/unstructured_mesh.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 

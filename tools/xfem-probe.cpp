@@ -2,13 +2,13 @@
 // A solution sampled at arbitrary points (crack openings, corner values), each on its side of the cut.
 #include <string>
 
-#include "xfem/cli.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/error.h"
-#include "xfem/matrix_market.h"
-#include "xfem/point_probe.h"
-#include "xfem/rms_error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/cli.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/post/point_probe.h"
+#include "xfem/post/rms_error.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(

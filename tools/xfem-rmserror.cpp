@@ -3,17 +3,17 @@
 #include <cmath>
 #include <cstdio>
 
-#include "xfem/cli.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/error.h"
-#include "xfem/exact_error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/problem.h"
-#include "xfem/json_io.h"
-#include "xfem/matrix_market.h"
-#include "xfem/rms_error.h"
-#include "xfem/version.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/cli.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/post/exact_error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/system/problem.h"
+#include "xfem/core/json_io.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/post/rms_error.h"
+#include "xfem/core/version.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 

@@ -15,16 +15,16 @@
 #include <mutex>
 #include <thread>
 
-#include "xfem/cholmod_solver.h"
-#include "xfem/cli.h"
-#include "xfem/dirichlet.h"
-#include "xfem/error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/linear_system.h"
-#include "xfem/petsc_binary.h"
-#include "xfem/petsc_solver.h"
-#include "xfem/reactions.h"
-#include "xfem/version.h"
+#include "xfem/solve/cholmod_solver.h"
+#include "xfem/core/cli.h"
+#include "xfem/system/dirichlet.h"
+#include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/system/linear_system.h"
+#include "xfem/io/petsc_binary.h"
+#include "xfem/solve/petsc_solver.h"
+#include "xfem/system/reactions.h"
+#include "xfem/core/version.h"
 
 namespace {
 

@@ -8,22 +8,22 @@
 #include <memory>
 #include <string>
 
-#include "xfem/background_queue.h"
-#include "xfem/blas_threads.h"
-#include "xfem/cli.h"
-#include "xfem/cut_surface.h"
-#include "xfem/cut_sweep.h"
-#include "xfem/deformed_mesh.h"
-#include "xfem/element_split.h"
-#include "xfem/error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/matrix_market.h"
-#include "xfem/paraview_collection.h"
-#include "xfem/problem.h"
-#include "xfem/progressive_cut.h"
-#include "xfem/snapshot.h"
-#include "xfem/version.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/background_queue.h"
+#include "xfem/core/blas_threads.h"
+#include "xfem/core/cli.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/generate/cut_sweep.h"
+#include "xfem/post/deformed_mesh.h"
+#include "xfem/geometry/element_split.h"
+#include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/io/paraview_collection.h"
+#include "xfem/system/problem.h"
+#include "xfem/progressive/progressive_cut.h"
+#include "xfem/io/snapshot.h"
+#include "xfem/core/version.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 std::string g(double v) {

@@ -3,19 +3,19 @@
 #include <cstdlib>
 #include <string>
 
-#include "xfem/cli.h"
-#include "xfem/deformed_mesh.h"
-#include "xfem/element_split.h"
-#include "xfem/enriched_mesh.h"
-#include "xfem/error.h"
-#include "xfem/fingerprint.h"
-#include "xfem/matrix_market.h"
-#include "xfem/paraview_script.h"
-#include "xfem/problem.h"
-#include "xfem/several_cuts.h"
-#include "xfem/reactions.h"
-#include "xfem/snapshot.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/cli.h"
+#include "xfem/post/deformed_mesh.h"
+#include "xfem/geometry/element_split.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/io/paraview_script.h"
+#include "xfem/system/problem.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/system/reactions.h"
+#include "xfem/io/snapshot.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(

@@ -3,9 +3,9 @@
 // library's private dependencies must link), then prints its volume, which must be 0.006 m^3.
 #include <cstdio>
 
-#include "xfem/box_mesh.h"
-#include "xfem/version.h"
-#include "xfem/vtk_io.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/version.h"
+#include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;

@@ -8,7 +8,7 @@ BUILD=$(dirname "$XFEM_BIN"); P=$S/prefix
 fail() { echo "FAIL: $*"; exit 1; }
 cmake --install "$BUILD" --prefix "$P" >install.log 2>&1 || fail "cmake --install: $(tail -5 install.log)"
 for f in bin/xfem-mesh bin/xfem-classify bin/xfem-enrich bin/xfem-assemble bin/xfem-solve bin/xfem-visualize \
-         include/xfem/mesh.h include/xfem/version.h lib/cmake/xfem/xfemConfig.cmake; do
+         include/xfem/core/mesh.h include/xfem/core/version.h lib/cmake/xfem/xfemConfig.cmake; do
   [ -e "$P/$f" ] || fail "not installed: $f"
 done
 ls "$P"/lib*/libxfem.a >/dev/null 2>&1 || fail "libxfem.a not installed"

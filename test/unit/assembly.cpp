@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/assembly.h"
+#include "xfem/system/assembly.h"
 
 #include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
@@ -8,8 +8,8 @@
 #include <memory>
 #include <random>
 
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
 #include "enriched_test_meshes.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/atomic_file.h"
+#include "xfem/core/atomic_file.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "xfem/background_queue.h"
+#include "xfem/core/background_queue.h"
 
 namespace {
 int my_thread_id() { return static_cast<int>(syscall(SYS_gettid)); }

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <thread>
 
-#include "xfem/blas_threads.h"
+#include "xfem/core/blas_threads.h"
 
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
                        const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,

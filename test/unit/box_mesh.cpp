@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/box_mesh.h"
+#include "xfem/generate/box_mesh.h"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <map>
 
-#include "xfem/error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/io/vtk_io.h"
 #include "mesh_checks.h"
 
 namespace {

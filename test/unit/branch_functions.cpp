@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/branch_functions.h"
+#include "xfem/enrich/branch_functions.h"
 
 #include <algorithm>
 #include <array>
@@ -8,9 +8,9 @@
 #include <map>
 #include <memory>
 
-#include "xfem/box_mesh.h"
-#include "xfem/classification.h"
-#include "xfem/cut_surface.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/enrich/classification.h"
+#include "xfem/geometry/cut_surface.h"
 
 namespace {
 // A front along the line x = 0.5, z = 0.5 (direction -y), cut in the plane z = 0.5 for x < 0.5

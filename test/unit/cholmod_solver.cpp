@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/cholmod_solver.h"
+#include "xfem/solve/cholmod_solver.h"
 
 #include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "../../bench/elastic_box.h"
-#include "xfem/dirichlet.h"
+#include "xfem/system/dirichlet.h"
 
 TEST_CASE("cholmod_solver: the pulled beam solves to a relative residual below 1e-10", "[cholmod_solver]") {
   const xfem::LinearSystem s = xfem::bench::beam_system({2, 4, 14});

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/classification.h"
+#include "xfem/enrich/classification.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "xfem/box_mesh.h"
-#include "xfem/cut_sweep.h"
-#include "xfem/dof_numbering.h"
-#include "xfem/error.h"
-#include "xfem/unstructured_mesh.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/generate/cut_sweep.h"
+#include "xfem/enrich/dof_numbering.h"
+#include "xfem/core/error.h"
+#include "xfem/generate/unstructured_mesh.h"
 
 using xfem::CutClass;
 using xfem::Enrichment;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/cli.h"
+#include "xfem/core/cli.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "xfem/error.h"
-#include "xfem/version.h"
+#include "xfem/core/error.h"
+#include "xfem/core/version.h"
 
 namespace {
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/conforming_quadrature.h"
+#include "xfem/integrate/conforming_quadrature.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 
-#include "xfem/assembly.h"
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
-#include "xfem/problem.h"
+#include "xfem/system/assembly.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/system/problem.h"
 #include "enriched_test_meshes.h"
 
 namespace {

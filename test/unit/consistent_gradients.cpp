@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/consistent_gradients.h"
+#include "xfem/integrate/consistent_gradients.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 
-#include "xfem/box_mesh.h"
-#include "xfem/conforming_quadrature.h"
-#include "xfem/cut_pieces.h"
-#include "xfem/enriched_basis.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/geometry/cut_pieces.h"
+#include "xfem/enrich/enriched_basis.h"
 #include "enriched_test_meshes.h"
 
 namespace {

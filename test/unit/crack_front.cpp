@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/crack_front.h"
+#include "xfem/geometry/crack_front.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

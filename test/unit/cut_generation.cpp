@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/cut_generation.h"
+#include "xfem/generate/cut_generation.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
-#include "xfem/error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/cut_pieces.h"
+#include "xfem/geometry/cut_pieces.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 
-#include "xfem/mesh.h"
+#include "xfem/core/mesh.h"
 
 namespace {
 

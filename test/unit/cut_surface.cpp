@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/cut_surface.h"
+#include "xfem/geometry/cut_surface.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/deformed_mesh.h"
+#include "xfem/post/deformed_mesh.h"
 
 #include <catch2/catch.hpp>
 #include <map>
 #include <memory>
 
-#include "xfem/box_mesh.h"
-#include "xfem/cut_surface.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/dirichlet.h"
+#include "xfem/system/dirichlet.h"
 
 #include <Eigen/Cholesky>
 #include <catch2/catch.hpp>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/dof_numbering.h"
+#include "xfem/enrich/dof_numbering.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

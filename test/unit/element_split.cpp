@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/element_split.h"
+#include "xfem/geometry/element_split.h"
 
 #include <catch2/catch.hpp>
 #include <map>
 #include <set>
 
-#include "xfem/box_mesh.h"
-#include "xfem/classification.h"
-#include "xfem/cut_generation.h"
-#include "xfem/cut_surface.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/enrich/classification.h"
+#include "xfem/generate/cut_generation.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/core/error.h"
 #include "mesh_checks.h"
 
 namespace {

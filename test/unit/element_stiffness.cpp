@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/element_stiffness.h"
+#include "xfem/integrate/element_stiffness.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/enriched_basis.h"
+#include "xfem/enrich/enriched_basis.h"
 
 #include <catch2/catch.hpp>
 #include <memory>
 
-#include "xfem/element_stiffness.h"
-#include "xfem/oversampling_quadrature.h"
+#include "xfem/integrate/element_stiffness.h"
+#include "xfem/integrate/oversampling_quadrature.h"
 
 namespace {
 

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/enriched_mesh.h"
+#include "xfem/enrich/enriched_mesh.h"
 
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "xfem/box_mesh.h"
-#include "xfem/classification.h"
-#include "xfem/dof_numbering.h"
-#include "xfem/error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/enrich/classification.h"
+#include "xfem/enrich/dof_numbering.h"
+#include "xfem/core/error.h"
+#include "xfem/io/vtk_io.h"
 
 namespace fs = std::filesystem;
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "xfem/box_mesh.h"
-#include "xfem/cut_surface.h"
-#include "xfem/enriched_mesh.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/enrich/enriched_mesh.h"
 
 namespace xfem_test {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/exact_fields.h"
+#include "xfem/fracture/exact_fields.h"
 
-#include "xfem/branch_functions.h"
+#include "xfem/enrich/branch_functions.h"
 
 #include <catch2/catch.hpp>
 

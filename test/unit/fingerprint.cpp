@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/fingerprint.h"
+#include "xfem/core/fingerprint.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 
-#include "xfem/error.h"
-#include "xfem/matrix_market.h"
+#include "xfem/core/error.h"
+#include "xfem/io/matrix_market.h"
 
 namespace {
 std::string scratch(const std::string& name) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // gmsh meshes (.msh 2.2 and 4.1) and mixed-cell VTK meshes: tets as the body, physical groups or
 // cell-array groups as point sets, and the {"group": ...} selector of problem.json.
-#include "xfem/gmsh_io.h"
+#include "xfem/io/gmsh_io.h"
 
 #include <unistd.h>
 
@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "xfem/boundary_groups.h"
-#include "xfem/error.h"
-#include "xfem/problem.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/boundary_groups.h"
+#include "xfem/core/error.h"
+#include "xfem/system/problem.h"
+#include "xfem/io/vtk_io.h"
 
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;

@@ -10,12 +10,12 @@
 #include <iterator>
 #include <map>
 
-#include "xfem/error.h"
-#include "xfem/json_io.h"
-#include "xfem/linear_system.h"
-#include "xfem/matrix_market.h"
-#include "xfem/problem.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/core/json_io.h"
+#include "xfem/system/linear_system.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/system/problem.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 namespace fs = std::filesystem;

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/linear_system.h"
+#include "xfem/system/linear_system.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
-#include "xfem/error.h"
-#include "xfem/petsc_binary.h"
+#include "xfem/core/error.h"
+#include "xfem/io/petsc_binary.h"
 
 namespace {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/matrix_market.h"
+#include "xfem/io/matrix_market.h"
 
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 std::string scratch(const std::string& name) {

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <map>
 
-#include "xfem/mesh.h"
+#include "xfem/core/mesh.h"
 
 namespace xfem_test {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/mesh_ordering.h"
+#include "xfem/generate/mesh_ordering.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <random>
 #include <set>
 
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/oversampling_quadrature.h"
+#include "xfem/integrate/oversampling_quadrature.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/error.h"
-#include "xfem/mesh.h"
+#include "xfem/core/error.h"
+#include "xfem/core/mesh.h"
 
 TEST_CASE("oversampling_quadrature: m is the smallest integer with m^3 above the request", "[oversampling_quadrature]") {
   CHECK(xfem::oversampling_quadrature(1).size() == 8);

@@ -3,9 +3,9 @@
 // checked independently of the formulas it is built from.
 #include <random>
 
-#include "xfem/exact_fields.h"
-#include "xfem/json_io.h"
-#include "xfem/problem.h"
+#include "xfem/fracture/exact_fields.h"
+#include "xfem/core/json_io.h"
+#include "xfem/system/problem.h"
 
 #include <catch2/catch.hpp>
 

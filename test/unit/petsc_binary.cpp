@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/petsc_binary.h"
+#include "xfem/io/petsc_binary.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

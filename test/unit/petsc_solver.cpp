@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/petsc_solver.h"
+#include "xfem/solve/petsc_solver.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/pieces.h"
+#include "xfem/system/pieces.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/box_mesh.h"
+#include "xfem/generate/box_mesh.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/point_probe.h"
+#include "xfem/post/point_probe.h"
 
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
 
 namespace {
 using Field = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/problem.h"
+#include "xfem/system/problem.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -10,18 +10,18 @@
 #include <memory>
 #include <string>
 
-#include "xfem/assembly.h"
-#include "xfem/box_mesh.h"
-#include "xfem/cholmod_solver.h"
-#include "xfem/cut_generation.h"
-#include "xfem/cut_sweep.h"
-#include "xfem/cut_surface.h"
-#include "xfem/dirichlet.h"
-#include "xfem/error.h"
-#include "xfem/incremental_schur.h"
-#include "xfem/paraview_collection.h"
-#include "xfem/progressive_cut.h"
-#include "xfem/schur_solver.h"
+#include "xfem/system/assembly.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/solve/cholmod_solver.h"
+#include "xfem/generate/cut_generation.h"
+#include "xfem/generate/cut_sweep.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/system/dirichlet.h"
+#include "xfem/core/error.h"
+#include "xfem/solve/incremental_schur.h"
+#include "xfem/io/paraview_collection.h"
+#include "xfem/progressive/progressive_cut.h"
+#include "xfem/solve/schur_solver.h"
 
 namespace {
 

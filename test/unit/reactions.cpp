@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/reactions.h"
+#include "xfem/system/reactions.h"
 
 #include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 
-#include "xfem/assembly.h"
-#include "xfem/box_mesh.h"
-#include "xfem/dirichlet.h"
-#include "xfem/error.h"
+#include "xfem/system/assembly.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/system/dirichlet.h"
+#include "xfem/core/error.h"
 #include "enriched_test_meshes.h"
 
 namespace {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/rms_error.h"
+#include "xfem/post/rms_error.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/box_mesh.h"
-#include "xfem/point_location.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/geometry/point_location.h"
 
 namespace {
 using Field = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/segment_tree.h"
+#include "xfem/geometry/segment_tree.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "xfem/crack_front.h"
-#include "xfem/mesh.h"
+#include "xfem/geometry/crack_front.h"
+#include "xfem/core/mesh.h"
 
 namespace {
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/several_cuts.h"
+#include "xfem/enrich/several_cuts.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <map>
 
-#include "xfem/box_mesh.h"
-#include "xfem/cut_generation.h"
-#include "xfem/error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/generate/cut_generation.h"
+#include "xfem/core/error.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 

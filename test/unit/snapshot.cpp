@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/snapshot.h"
+#include "xfem/io/snapshot.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/stress_intensity.h"
+#include "xfem/fracture/stress_intensity.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 
-#include "xfem/box_mesh.h"
-#include "xfem/classification.h"
-#include "xfem/cut_generation.h"
-#include "xfem/dof_numbering.h"
-#include "xfem/error.h"
-#include "xfem/exact_fields.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/enrich/classification.h"
+#include "xfem/generate/cut_generation.h"
+#include "xfem/enrich/dof_numbering.h"
+#include "xfem/core/error.h"
+#include "xfem/fracture/exact_fields.h"
 
 namespace {
 

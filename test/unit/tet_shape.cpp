@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/tet_shape.h"
+#include "xfem/geometry/tet_shape.h"
 
 #include <catch2/catch.hpp>
 
-#include "xfem/error.h"
+#include "xfem/core/error.h"
 
 namespace {
 const Eigen::Vector3d p0(0.1, 0.2, 0.3), p1(1.3, 0.1, 0.4), p2(0.2, 1.1, 0.2), p3(0.3, 0.4, 1.5);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/unstructured_mesh.h"
+#include "xfem/generate/unstructured_mesh.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
-#include "xfem/error.h"
-#include "xfem/mesh_ordering.h"
-#include "xfem/organ_shape.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/generate/mesh_ordering.h"
+#include "xfem/generate/organ_shape.h"
+#include "xfem/io/vtk_io.h"
 #include "mesh_checks.h"
 
 namespace {

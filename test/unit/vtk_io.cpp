@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/vtk_io.h"
+#include "xfem/io/vtk_io.h"
 
 #include <unistd.h>
 
@@ -17,8 +17,8 @@
 #include <limits>
 #include <sstream>
 
-#include "xfem/box_mesh.h"
-#include "xfem/error.h"
+#include "xfem/generate/box_mesh.h"
+#include "xfem/core/error.h"
 
 namespace fs = std::filesystem;
 using xfem::DataArray;

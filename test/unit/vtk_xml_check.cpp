@@ -2,7 +2,7 @@
 // The pre-check of VTK XML files (lib/xfem/vtk_xml_check) must accept every layout VTK's own
 // writers produce (other programs write these files: ParaView, meshio, pyvista), and refuse the
 // corrupt headers that crash VTK 9.1's reader.
-#include "xfem/vtk_xml_check.h"
+#include "xfem/io/vtk_xml_check.h"
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -19,8 +19,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "xfem/error.h"
-#include "xfem/vtk_io.h"
+#include "xfem/core/error.h"
+#include "xfem/io/vtk_io.h"
 
 namespace {
 namespace fs = std::filesystem;

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/integrate/conforming_quadrature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "xfem/integrate/consistent_gradients.h"
+#include "xfem/geometry/cut_pieces.h"
+#include "xfem/enrich/enriched_basis.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/core/error.h"
+#include "xfem/geometry/tet_shape.h"
+
+namespace xfem {
+namespace {
+
+// A vertex this close to the front (relative to the tet's longest edge) lies on it: the split's
+// front points come from inexact constructions, so exact zero is not expected.
+constexpr double kOnFront = 1e-6;
+
+// A tet part is bisected while the front is nearer to it than kNear times its length, at most
+// kMaxLevels times (a front through an edge's interior would otherwise split it forever; fewer for
+// low orders, see append_tet_rule). A tet
+// without a vertex on the front (blending elements, pieces of completely cut ones) is split only
+// while the front is nearer than kNearFar times its longest edge, at most kMaxLevelsFar times: its
+// integrand is bounded, and splitting every tet within one size of the front costs 20x the points.
+constexpr double kNear = 1.0;
+constexpr int kMaxLevels = 8;
+constexpr double kNearFar = 0.5;
+constexpr int kMaxLevelsFar = 8;
+
+}  // namespace
+
+void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+  if (n < 1 || n > 64) throw Error("Gauss-Legendre rule: order must be in 1..64, got " + std::to_string(n));
+  nodes.assign(n, 0.0);
+  weights.assign(n, 0.0);
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < (n + 1) / 2; ++i) {
+    // Newton on P_n from the Chebyshev-like guess; p1 = P_n(z), dp = P_n'(z).
+    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p1 = 1.0, p2 = 0.0;
+      for (int j = 1; j <= n; ++j) {
+        const double p3 = p2;
+        p2 = p1;
+        p1 = ((2.0 * j - 1.0) * z * p2 - (j - 1.0) * p3) / j;
+      }
+      dp = n * (z * p1 - p2) / (z * z - 1.0);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-16) break;
+    }
+    const double w = 1.0 / ((1.0 - z * z) * dp * dp);  // half the [-1, 1] weight: maps to [0, 1]
+    nodes[i] = 0.5 * (1.0 - z);
+    nodes[n - 1 - i] = 0.5 * (1.0 + z);
+    weights[i] = weights[n - 1 - i] = w;
+  }
+}
+
+void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                      const Eigen::Vector3d& d, int n, int side, PointRule& out) {
+  std::vector<double> g, gw;
+  gauss_legendre_01(n, g, gw);
+  // |det(b-a, c-a, d-c)| = 6 V: the volume is the integral of 6 V s (1-s) over the unit cube.
+  const double six_v = std::abs((b - a).cross(c - a).dot(d - c));
+  for (int i = 0; i < n; ++i) {
+    const double sigma = g[i], s = sigma * sigma;
+    const double radial = gw[i] * 2.0 * sigma * s * (1.0 - s) * six_v;  // ds = 2 sigma dsigma
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector3d on_ab = a + g[j] * (b - a);
+      for (int k = 0; k < n; ++k) {
+        out.x.push_back((1.0 - s) * on_ab + s * (c + g[k] * (d - c)));
+        out.weights.push_back(radial * gw[j] * gw[k]);
+        out.side.push_back(side);
+      }
+    }
+  }
+}
+
+void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d, int n, int side, PointRule& out) {
+  std::vector<double> g, gw;
+  gauss_legendre_01(n, g, gw);
+  const double six_v = std::abs((b - a).cross(c - a).dot(d - a));
+  for (int i = 0; i < n; ++i) {
+    const double sigma = g[i], u = sigma * sigma;
+    const double radial = gw[i] * 2.0 * sigma * u * u * six_v;  // u^2 du, du = 2 sigma dsigma
+    for (int j = 0; j < n; ++j) {
+      const double v = g[j];
+      for (int k = 0; k < n; ++k) {
+        out.x.push_back(a + u * (b - a) + u * v * (c - b) + u * v * g[k] * (d - c));
+        out.weights.push_back(radial * v * gw[j] * gw[k]);
+        out.side.push_back(side);
+      }
+    }
+  }
+}
+
+namespace {
+
+// append_tet_rule at subdivision depth `level`: a tet whose integrand is nearly singular (the front
+// passes close to, but not through, the part the Gauss points resolve) is bisected at the midpoint
+// of the edge concerned, the halves keeping the vertices on the front, until the front is at least
+// as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
+                     PointRule& out, int level) {
+  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  auto opposite = [](int i, int j, int& k, int& l) {
+    k = -1;
+    for (int m = 0; m < 4; ++m)
+      if (m != i && m != j) (k < 0 ? k : l) = m;
+  };
+  // The tet with vertex i replaced by the midpoint of edge (i, j), and with vertex j replaced.
+  auto bisect = [&](int i, int j) {
+    const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
+    std::array<Eigen::Vector3d, 4> q = p;
+    q[i] = mid;
+    append_tet_rule(q, front, n, side, out, level + 1);
+    q = p;
+    q[j] = mid;
+    append_tet_rule(q, front, n, side, out, level + 1);
+  };
+  // Bisection pays only when the Gauss rule itself is accurate: the depth grows with the order
+  // (order 3, the default: 1 level at the front, none away from it; order 7 and up: 8 and 8).
+  const int max_near = std::min(kMaxLevels, (n - 2) * (n - 2)), max_far = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
+  const bool may_split = level < max_near;
+  int best = 0;
+  if (!front.empty()) {
+    double longest = 0;
+    for (const auto& e : kEdges) longest = std::max(longest, (p[e[0]] - p[e[1]]).norm());
+    int on[4], count = 0;
+    for (int m = 0; m < 4; ++m)
+      if (front.distance(p[m]) <= kOnFront * longest) on[count++] = m;
+    if (count == 1) {
+      // Singular at vertex a; nearly singular in the direction of the face opposite it when the
+      // front line passes close to that face: split the face's longest edge.
+      int j = on[0] == 0 ? 1 : 0, k = -1, l = -1;
+      opposite(on[0], j, k, l);
+      const int face[3] = {j, k, l};
+      double h = std::numeric_limits<double>::infinity(), edge = 0;
+      int e0 = 0, e1 = 1;
+      for (int x = 0; x < 3; ++x) {
+        const int u = face[x], v = face[(x + 1) % 3];
+        h = std::min(h, front.distance(p[u], p[v]));
+        if ((p[u] - p[v]).norm() > edge) {
+          edge = (p[u] - p[v]).norm();
+          e0 = u;
+          e1 = v;
+        }
+      }
+      if (may_split && h < kNear * edge) return bisect(e0, e1);
+      append_vertex_rule(p[on[0]], p[j], p[k], p[l], n, side, out);
+      return;
+    }
+    if (count >= 2) {
+      int k = -1, l = -1;
+      opposite(on[0], on[1], k, l);
+      if (may_split && front.distance(p[k], p[l]) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
+      append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], n, side, out);
+      return;
+    }
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int e = 0; e < 6; ++e) {
+      const double dist = front.distance(p[kEdges[e][0]], p[kEdges[e][1]]);
+      if (dist < nearest) {
+        nearest = dist;
+        best = e;
+      }
+    }
+    if (level < max_far && nearest < kNearFar * longest) {
+      for (int e = 0; e < 6; ++e)
+        if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
+    }
+  }
+  int k = -1, l = -1;
+  opposite(kEdges[best][0], kEdges[best][1], k, l);
+  append_edge_rule(p[kEdges[best][0]], p[kEdges[best][1]], p[k], p[l], n, side, out);
+}
+
+}  // namespace
+
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
+                     PointRule& out) {
+  append_tet_rule(p, front, n, side, out, 0);
+}
+
+namespace {
+
+}  // namespace
+
+CutElementSplits split_cut_elements(const EnrichedMesh& em) {
+  if (!em.cuts.empty()) return split_cut_elements_several(em);
+  CutElementSplits out;
+  const int tets = em.tets();
+  out.index.assign(tets, -1);
+  out.first.push_back(0);
+  bool any = false;
+  if (!em.cut_class.empty())
+    for (int t = 0; t < tets && !any; ++t) any = em.cut_class[t] > 0;
+  if (!any) return out;
+  if (!em.cut) throw Error("conforming integration: the mesh has cut elements but no cut surface was given");
+  const std::vector<FrontSegment>& front = em.front.segments();
+  for (int t = 0; t < tets; ++t) {
+    if (em.cut_class[t] == 0) continue;
+    out.index[t] = static_cast<int>(out.first.size()) - 1;
+    TetCorners p;
+    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+    const std::vector<int> meeting = em.cut->triangles_meeting(p);
+    const CutPieces pieces = em.cut_class[t] == 2 ? split_by_cut(p, *em.cut, meeting)
+                                                  : split_at_front(p, *em.cut, meeting, front);
+    out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
+    out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
+    out.first.push_back(static_cast<int>(out.tets.size()));
+  }
+  return out;
+}
+
+void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out) {
+  out.clear();
+  const int i = splits.index.empty() ? -1 : splits.index[t];
+  if (i < 0) {
+    std::array<Eigen::Vector3d, 4> p;
+    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+    append_tet_rule(p, front_of_tet(em, t), n, 0, out);
+    return;
+  }
+  // The sign enrichment is constant on each piece and the shape functions linear: one point per
+  // piece integrates exactly. Branch functions need the front-singular Gauss rule.
+  bool branch = false;
+  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
+    const auto& q = splits.tets[s];
+    if (branch) {
+      append_tet_rule(q, front_of_tet(em, t), n, splits.side[s], out);
+    } else {
+      out.x.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
+      out.weights.push_back(std::abs(signed_volume(q[0], q[1], q[2], q[3])));
+      out.side.push_back(splits.side[s]);
+    }
+  }
+}
+
+void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
+                                 Eigen::MatrixXd& k, int consistent_order, FaceIntegralCache* face_cache) {
+  // As element_stiffness: S = G^T G, row q of G the basis gradients at point q times sqrt(weight).
+  const TetShape shape = tet_shape(em.mesh, t);
+  const int n = em.size(t), q = rule.size();
+  Eigen::MatrixXd gradients(q, 3 * n);
+  BasisAt b;
+  for (int p = 0; p < q; ++p) {
+    enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
+    for (int c = 0; c < n; ++c)
+      for (int a = 0; a < 3; ++a) gradients(p, 3 * c + a) = b.dN(c, a);
+  }
+  // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
+  // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
+  bool branch = false;
+  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  if (consistent_order > 0 && branch && q > 0) {
+    const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_order, face_cache);
+    const double volume = w.sum();
+    for (int c = 0; c < n; ++c) {
+      if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;
+      for (int a = 0; a < 3; ++a) {
+        const double shift = (exact(c, a) - w.dot(gradients.col(3 * c + a))) / volume;
+        gradients.col(3 * c + a).array() += shift;
+      }
+    }
+  }
+  for (int p = 0; p < q; ++p) gradients.row(p) *= std::sqrt(rule.weights[p]);
+  stiffness_from_gradients(gradients, material, k);
+}
+
+}  // namespace xfem

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+#include "xfem/geometry/crack_front.h"
+#include "xfem/geometry/cut_surface.h"
+#include "xfem/integrate/element_stiffness.h"
+#include "xfem/enrich/enriched_mesh.h"
+
+namespace xfem {
+
+class FaceIntegralCache;  // consistent_gradients.h
+
+/// A cut-conforming, front-singular integration rule for tets with enriched DOFs: the alternative
+/// to the paper's oversampling (3.6) selected by problem.json `integration.rule = "conforming"`
+/// (docs/FORMATS.md). Oversampling integrates the Heaviside jump only to O(sub-tet size), gives no
+/// point to thin slivers cut off a tet, and integrates the 1/r singular stiffness of the crack-tip
+/// functions only to ~1e-3 (docs/VERIFICATION.md). This rule
+///   1. splits every cut element along the cut into sub-tets of one side each (split_cut_elements:
+///      exact for a piecewise planar cut and a polygonal front; sub-tets next to the front have an
+///      edge or a vertex on it), so H and theta are evaluated with the sub-tet's own side;
+///   2. integrates every sub-tet (and every uncut enriched tet as one) with a collapsed Gauss
+///      tensor rule whose collapse sits on the front: on an edge lying on the front an edge-Duffy
+///      map, on a vertex lying on the front a vertex-Duffy map, each with the radial variable
+///      s = sigma^2, which makes r^(-1/2), r^(-1) (times the Jacobian) and sqrt(r) smooth in the
+///      parameters: exponential convergence in the order n instead of O(h_sub);
+///   3. shifts the branch functions' sampled gradients per element so that their integrals are
+///      exact in the sense of the divergence theorem (consistent_gradients.h): the linear patch
+///      test with a front inside the body holds to round-off.
+
+/// Integration points in physical space with absolute weights (m^3) and the side (+1 / -1, or 0 =
+/// "decide by the cut surface") with which the enriched basis is to be evaluated at each.
+struct PointRule {
+  std::vector<Eigen::Vector3d> x;  ///< metres
+  std::vector<double> weights;     ///< m^3, all > 0; sum = volume covered
+  std::vector<int> side;           ///< per point
+  int size() const { return static_cast<int>(weights.size()); }
+  void clear() {
+    x.clear();
+    weights.clear();
+    side.clear();
+  }
+};
+
+/// Gauss-Legendre nodes and weights on [0, 1] (weights sum to 1), n = 1..64, exact for
+/// polynomials of degree 2n - 1. Throws xfem::Error outside 1..64.
+void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights);
+
+/// Edge-Duffy rule of the tet (a, b, c, d) collapsed on edge ab: x(s,t,w) = (1-s)(a + t(b-a)) +
+/// s(c + w(d-c)), Jacobian 6 V s (1-s), s = sigma^2, n Gauss points in each of sigma, t, w
+/// (n^3 points appended to `out` with `side`). Integrands ~ 1/r and r^(-1/2), r the distance to
+/// the line ab, become smooth. Polynomials of degree p are integrated exactly for 2n - 1 >= 2p + 5
+/// (p = 3: n >= 6).
+void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                      const Eigen::Vector3d& d, int n, int side, PointRule& out);
+
+/// Vertex-Duffy rule collapsed at a: x = a + u(b-a) + uv(c-b) + uvw(d-c), Jacobian 6 V u^2 v,
+/// u = sigma^2: for integrands singular like 1/r at the vertex (r the distance to a line through a
+/// that does not enter the tet). Polynomials of degree p exact for 2n - 1 >= 2p + 5.
+void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d, int n, int side, PointRule& out);
+
+/// The rule for one tet p[0..3] near `front` (may be empty): the vertices within 1e-6 of the tet's
+/// longest edge of the front decide it: two -> edge rule on them, one -> vertex rule at it, none ->
+/// edge rule on the edge closest to the front (any edge for an empty front). Where the front passes
+/// closer than its length to the part of the tet the rule resolves (edge cd of an edge rule, the
+/// face opposite a vertex rule's vertex, the whole tet otherwise), the integrand is nearly singular
+/// and Gauss rules converge slowly: the tet is bisected at that part's longest edge, recursively
+/// (front within one length of a part with a vertex on the front, within half the longest edge of
+/// a tet without one; at most min(8, (n-2)^2) levels for a part with a vertex on the front,
+/// min(8, 2(n-3)) otherwise: deep bisection pays only for accurate rules), and each half gets its
+/// own rule. Appends n^3 points per
+/// final tet with `side`.
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
+                     PointRule& out);
+
+/// The cut elements of a mesh split along the cut into pieces of one side each, once for all
+/// elements, by cut_pieces.h: completely cut elements (cut_class 2) by split_by_cut, partially cut
+/// ones (cut_class 1) by split_at_front (also at the planes through the front segments, so that
+/// the front is made of the pieces' edges). Exact for a piecewise planar cut, however thin a piece.
+struct CutElementSplits {
+  std::vector<std::array<Eigen::Vector3d, 4>> tets;  ///< corners (m) of every piece
+  std::vector<int> side;   ///< per piece: +1 / -1 (ahead of the front: its half of the cut's plane)
+  std::vector<int> index;  ///< per mesh tet: its row in `first`, -1 for uncut tets
+  std::vector<int> first;  ///< CSR: pieces first[i] .. first[i+1]-1
+};
+/// Throws xfem::Error when em has cut elements but no cut surface.
+CutElementSplits split_cut_elements(const EnrichedMesh& em);
+
+/// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side), or the
+/// tet itself for an uncut one (side 0), each by append_tet_rule with order n.
+void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out);
+
+/// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
+/// (the enriched basis evaluated at each point with the point's side). Same layout as
+/// element_stiffness of element_stiffness.h. With consistent_order > 0 the branch functions'
+/// gradients are first shifted per element so that the rule integrates them exactly as the
+/// divergence theorem does (branch_gradient_integrals, consistent_gradients.h, with that many
+/// Gauss points per direction on the faces): the linear patch test then holds to round-off.
+/// `face_cache` (optional): face integrals shared between neighbouring tets (consistent_gradients.h);
+/// pass the same one for all the tets of an assembly.
+void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
+                                 Eigen::MatrixXd& k, int consistent_order = 0, FaceIntegralCache* face_cache = nullptr);
+
+}  // namespace xfem

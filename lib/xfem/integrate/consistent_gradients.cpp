@@ -1,0 +1,365 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/integrate/consistent_gradients.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "xfem/enrich/branch_functions.h"
+#include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/geometry/cut_pieces.h"
+#include "xfem/core/mesh.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/geometry/tet_shape.h"
+
+namespace xfem {
+namespace {
+
+using Polygon = std::vector<Eigen::Vector3d>;
+
+// Sutherland-Hodgman: the parts of the convex polygon on either side of the plane (point, normal).
+void split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
+                   Polygon& above, Polygon& below) {
+  above.clear();
+  below.clear();
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& u = poly[i];
+    const Eigen::Vector3d& v = poly[(i + 1) % n];
+    double du = normal.dot(u - point), dv = normal.dot(v - point);
+    if (std::abs(du) <= tolerance) du = 0;
+    if (std::abs(dv) <= tolerance) dv = 0;
+    if (du >= 0) above.push_back(u);
+    if (du <= 0) below.push_back(u);
+    if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) {
+      const Eigen::Vector3d x = u + du / (du - dv) * (v - u);
+      above.push_back(x);
+      below.push_back(x);
+    }
+  }
+}
+
+// Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
+// -1 if it misses the polygon.
+double length_in_polygon(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Polygon& poly,
+                         const Eigen::Vector3d& normal) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& x : poly) centre += x;
+  centre /= static_cast<double>(poly.size());
+  double lo = 0.0, hi = 1.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector3d& a = poly[i];
+    Eigen::Vector3d m = normal.cross(poly[(i + 1) % poly.size()] - a);
+    if (m.dot(centre - a) < 0) m = -m;  // inward, in the polygon's plane
+    const double dp = m.dot(p - a), dq = m.dot(q - a);
+    if (dp < 0 && dq < 0) return -1.0;
+    if (dp < 0) lo = std::max(lo, dp / (dp - dq));
+    if (dq < 0) hi = std::min(hi, dp / (dp - dq));
+  }
+  return hi >= lo ? (hi - lo) * (q - p).norm() : -1.0;
+}
+
+// The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
+bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                      double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
+  const TriangleMesh& cm = cut.mesh();
+  std::array<Eigen::Vector3d, 3> v;
+  std::array<double, 3> d;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = cm.points.row(cm.triangles(f, k)).transpose();
+    d[k] = normal.dot(v[k] - point);
+    if (std::abs(d[k]) <= tolerance) d[k] = 0;
+  }
+  std::vector<Eigen::Vector3d> ends;
+  for (int k = 0; k < 3; ++k) {
+    const int l = (k + 1) % 3;
+    if (d[k] == 0) ends.push_back(v[k]);
+    if ((d[k] > 0 && d[l] < 0) || (d[k] < 0 && d[l] > 0)) ends.push_back(v[k] + d[k] / (d[k] - d[l]) * (v[l] - v[k]));
+  }
+  if (ends.size() != 2) return false;  // missing the plane, touching it at a corner, or lying in it
+  p = ends[0];
+  q = ends[1];
+  return true;
+}
+
+// The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
+// into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
+// segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
+void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eigen::Vector3d& C, int depth,
+                   const std::vector<const FrontSegment*>& fronts, const std::vector<double>& nodes,
+                   const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x, std::vector<double>& w) {
+  const double area2 = (B - A).cross(C - A).norm();
+  if (!(area2 > 0.0)) return;
+  if (depth > 0) {
+    const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+    const Eigen::Vector3d centre = (A + B + C) / 3;
+    bool near = false;
+    for (const FrontSegment* f : fronts) near = near || point_segment_distance(centre, f->p0, f->p1) < size;
+    if (near) {
+      const Eigen::Vector3d ab = (A + B) / 2, bc = (B + C) / 2, ca = (C + A) / 2;
+      triangle_rule(A, ab, ca, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, B, bc, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ca, bc, C, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, bc, ca, depth - 1, fronts, nodes, weights, x, w);
+      return;
+    }
+  }
+  for (std::size_t i1 = 0; i1 < nodes.size(); ++i1)
+    for (std::size_t i2 = 0; i2 < nodes.size(); ++i2) {
+      const double s = nodes[i1], t = nodes[i2];
+      x.push_back(A + s * (B - A) + s * t * (C - B));
+      w.push_back(weights[i1] * weights[i2] * area2 * s);
+    }
+}
+
+// Gauss points of the convex polygon, fanned from `apex` (a corner, or a point inside it) over its
+// edges, each triangle by triangle_rule with the collapse at the apex. Positions and weights (m^2).
+void polygon_rule(const Polygon& poly, const Eigen::Vector3d& apex, int depth, const std::vector<const FrontSegment*>& fronts,
+                  const std::vector<double>& nodes, const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x,
+                  std::vector<double>& w) {
+  x.clear();
+  w.clear();
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    triangle_rule(apex, poly[i], poly[(i + 1) % poly.size()], depth, fronts, nodes, weights, x, w);
+}
+
+// Where the integrand is singular in the polygon: a front segment piercing its inside (that
+// point), else a corner on the front (the first found), else its first corner.
+Eigen::Vector3d fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, const std::vector<const FrontSegment*>& fronts,
+                         double tolerance) {
+  for (const FrontSegment* f : fronts) {
+    const double d0 = normal.dot(f->p0 - poly[0]), d1 = normal.dot(f->p1 - poly[0]);
+    if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance) || d0 == d1) continue;
+    if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) continue;  // lying in the plane
+    const Eigen::Vector3d p = f->p0 + d0 / (d0 - d1) * (f->p1 - f->p0);
+    if (length_in_polygon(p, p, poly, normal) >= 0) return p;
+  }
+  for (const Eigen::Vector3d& v : poly)
+    for (const FrontSegment* f : fronts)
+      if (point_segment_distance(v, f->p0, f->p1) <= tolerance) return v;
+  return poly[0];
+}
+
+// The integrals over face (A, B, C) (its points in increasing id order, `normal` its unit normal)
+// of N_v F_j for v = A, B, C and the four branch functions, for a tet whose outward normal is
+// +normal [0] and -normal [1]. Everything here depends on the face alone, so that the two tets
+// sharing it get the same numbers (FaceIntegralCache): the face is split along the cut's trace (by
+// every cut triangle crossing a part's inside, `meeting` holding at least those) and along a front
+// lying in its plane, then fanned from the singular point of each part.
+std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut, const CrackFront& front,
+                                                          const std::vector<const FrontSegment*>& fronts,
+                                                          const std::vector<int>& meeting, const Eigen::Vector3d& A,
+                                                          const Eigen::Vector3d& B, const Eigen::Vector3d& C,
+                                                          const Eigen::Vector3d& normal, int depth,
+                                                          const std::vector<double>& nodes,
+                                                          const std::vector<double>& weights) {
+  // Tolerances of the face's own size: both tets decide alike.
+  const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+  const double face_tolerance = 1e-12 * face_h;
+  std::vector<Polygon> parts{{A, B, C}}, next;
+  Polygon above, below;
+  if (cut) {
+    for (const int tri : meeting) {
+      Eigen::Vector3d p, q;
+      if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
+      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
+      const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
+      next.clear();
+      for (const Polygon& part : parts) {
+        split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
+        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
+          next.push_back(above);
+          next.push_back(below);
+        } else {
+          next.push_back(part);
+        }
+      }
+      parts.swap(next);
+    }
+  }
+  // The front segments near the face: its own bounding box, so that both tets see the same.
+  std::vector<const FrontSegment*> face_fronts;
+  const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
+  for (const FrontSegment* segment : fronts)
+    if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
+        (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
+      face_fronts.push_back(segment);
+  // A front lying in the face's plane splits it too: the cut covers the face on one side of the
+  // front only (there each tet sees its own side's F), and F ~ sqrt(r) is smooth on either side.
+  for (const FrontSegment* segment : face_fronts) {
+    if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
+    const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
+    next.clear();
+    for (const Polygon& part : parts) {
+      split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
+      if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
+        next.push_back(above);
+        next.push_back(below);
+      } else {
+        next.push_back(part);
+      }
+    }
+    parts.swap(next);
+  }
+  // Barycentric coordinates on the face, for N_v.
+  Eigen::Matrix<double, 3, 2> J;
+  J << B - A, C - A;
+  const Eigen::LDLT<Eigen::Matrix2d> JtJ = (J.transpose() * J).ldlt();  // factored once for all points
+  std::array<Eigen::Matrix<double, 3, 4>, 2> integral;
+  integral[0].setZero();
+  integral[1].setZero();
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> w;
+  for (const Polygon& part : parts) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& v : part) centre += v;
+    centre /= static_cast<double>(part.size());
+    // The side whose F the part shows each tet: its own, or for a part lying on the cut, the side
+    // the tet is on (the one its outward normal points away from).
+    std::array<int, 2> side = {0, 0};
+    if (cut) {
+      const CutSurface::Closest near = cut->closest(centre);
+      if (near.distance <= face_tolerance) {
+        const double along = cut->unit_normal(near.triangle).dot(normal);
+        side = {-along > 0 ? 1 : -1, along > 0 ? 1 : -1};
+      } else {
+        side[0] = side[1] = cut->side(centre);
+      }
+    }
+    polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const Eigen::Vector2d bc = JtJ.solve(J.transpose() * (x[i] - A));
+      const Eigen::Vector3d N(1.0 - bc[0] - bc[1], bc[0], bc[1]);
+      const TipCoordinates tc = front.coordinates(x[i]);
+      const BranchValues F0 = branch_functions(tc, side[0]);
+      const BranchValues F1 = side[1] == side[0] ? F0 : branch_functions(tc, side[1]);
+      for (int j = 0; j < 4; ++j) {
+        integral[0].col(j) += (w[i] * F0.F[j]) * N;
+        integral[1].col(j) += (w[i] * F1.F[j]) * N;
+      }
+    }
+  }
+  return integral;
+}
+
+}  // namespace
+
+Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
+                                                                   FaceIntegralCache* cache) {
+  const int n = em.size(t);
+  const long begin = em.offsets[t];
+  Eigen::Matrix<double, Eigen::Dynamic, 3> out = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
+  // The branch entries of C: (row, local node, function).
+  struct Entry {
+    int row, local, function;
+  };
+  std::vector<Entry> entries;
+  for (int k = 0; k < n; ++k)
+    if (em.dofs[begin + k] >= em.np + em.ns)
+      entries.push_back({k, em.local[begin + k], static_cast<int>((em.dofs[begin + k] - em.np - em.ns) % 4)});
+  if (entries.empty()) return out;
+  // With several cuts: the cut whose branch DOFs the tet holds (several_cuts.h).
+  const CutSurface* const cut = cut_of_tet(em, t);
+  const CrackFront& front = front_of_tet(em, t);
+
+  std::vector<double> nodes, weights;
+  gauss_legendre_01(order, nodes, weights);
+  // Subdivision near the front pays only for accurate rules (as the volume rule's bisection).
+  const int depth = std::max(0, order - 3);
+  std::array<Eigen::Vector3d, 4> corner;
+  std::array<long, 4> id;
+  for (int c = 0; c < 4; ++c) {
+    id[c] = em.mesh.tets(t, c);
+    corner[c] = em.mesh.points.row(id[c]).transpose();
+  }
+  double h = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) h = std::max(h, (corner[i] - corner[j]).norm());
+  const double tolerance = 1e-12 * h;
+  const std::vector<int> meeting = cut ? cut->triangles_meeting(corner) : std::vector<int>();
+  // The front segments near the tet (its bounding box, grown by the tolerance).
+  Eigen::Vector3d lo = corner[0], hi = corner[0];
+  for (const auto& x : corner) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::vector<const FrontSegment*> fronts;
+  for (const FrontSegment& segment : front.segments())
+    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
+        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
+      fronts.push_back(&segment);
+
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> w;
+  // 1. The four faces. Face k is opposite corner k; its corners in global node order make its
+  // points and splits the same from both tets that share it.
+  for (int k = 0; k < 4; ++k) {
+    std::array<int, 3> f;
+    for (int c = 0, m = 0; c < 4; ++c)
+      if (c != k) f[m++] = c;
+    std::sort(f.begin(), f.end(), [&](int a, int b) { return id[a] < id[b]; });
+    bool needed = false;  // N_l vanishes on the faces without node l
+    for (const Entry& e : entries) needed = needed || e.local != k;
+    if (!needed) continue;
+    const Eigen::Vector3d &A = corner[f[0]], &B = corner[f[1]], &C = corner[f[2]];
+    Eigen::Vector3d normal = (B - A).cross(C - A);
+    const double area2 = normal.norm();
+    if (area2 == 0.0) continue;
+    normal /= area2;
+    const bool reversed = normal.dot(A - corner[k]) <= 0;  // outward = -normal
+    const Eigen::Vector3d outward = reversed ? Eigen::Vector3d(-normal) : normal;
+    const FaceIntegralCache::Key key{{id[f[0]], id[f[1]], id[f[2]]}, &front};
+    FaceIntegralCache::Value computed;
+    FaceIntegralCache::Value* face = nullptr;
+    if (cache) {
+      const auto found = cache->faces.find(key);
+      if (found != cache->faces.end()) face = &found->second;
+    }
+    if (!face) {
+      computed.integral = face_integrals(cut, front, fronts, meeting, A, B, C, normal, depth, nodes, weights);
+      face = &computed;
+      if (cache) face = &(cache->faces[key] = computed);
+    }
+    const Eigen::Matrix<double, 3, 4>& integral = face->integral[reversed ? 1 : 0];
+    for (const Entry& e : entries) {
+      if (e.local == k) continue;
+      const long v = std::find(f.begin(), f.end(), e.local) - f.begin();
+      out.row(e.row) += integral(v, e.function) * outward.transpose();
+    }
+    if (cache && ++face->uses == 2) cache->faces.erase(key);  // both tets of the face served
+  }
+  // 2. The cut inside the tet: the jump of F across it (a cut lying on a face was taken there).
+  if (cut) {
+    const TetShape shape = tet_shape(em.mesh, t);
+    const TriangleMesh& cm = cut->mesh();
+    for (const int tri : meeting) {
+      const Polygon poly = clip_triangle(corner, cm.points.row(cm.triangles(tri, 0)).transpose(),
+                                         cm.points.row(cm.triangles(tri, 1)).transpose(),
+                                         cm.points.row(cm.triangles(tri, 2)).transpose());
+      if (!(polygon_area(poly) > 1e-10 * h * h)) continue;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& v : poly) centre += v;
+      centre /= static_cast<double>(poly.size());
+      bool on_face = false;
+      for (int k = 0; k < 4; ++k) {
+        const Eigen::Vector3d& a = corner[(k + 1) % 4];
+        const Eigen::Vector3d nf = (corner[(k + 2) % 4] - a).cross(corner[(k + 3) % 4] - a).normalized();
+        on_face = on_face || std::abs(nf.dot(centre - a)) <= tolerance;
+      }
+      if (on_face) continue;
+      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
+      polygon_rule(poly, fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const TipCoordinates tc = front.coordinates(x[i]);
+        const BranchValues below = branch_functions(tc, -1), above = branch_functions(tc, 1);
+        const Eigen::Vector4d N = shape.values(x[i]);
+        for (const Entry& e : entries)
+          out.row(e.row) += (w[i] * N[e.local] * (below.F[e.function] - above.F[e.function])) * cut_normal.transpose();
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace xfem

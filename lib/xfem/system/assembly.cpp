@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/system/assembly.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <map>
+#include <numeric>
+
+#include "xfem/enrich/branch_functions.h"
+#include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/integrate/consistent_gradients.h"
+#include "xfem/enrich/several_cuts.h"
+#include "xfem/core/error.h"
+#include "xfem/core/parallel_for.h"
+#include "xfem/system/pieces.h"
+#include "xfem/geometry/tet_shape.h"
+#include "xfem/core/seconds_since.h"
+
+namespace xfem {
+namespace {
+
+// The lower triangle of K at the level of 3-vectors: for DOF column b the rows a >= b of every DOF
+// sharing a tet with b (rows[start[b]] == b), and for each tet a |C| x |C| table giving, for entry
+// pair (row entry q, column entry p) with C[q] >= C[p], the index of C[q] in column C[p]'s rows.
+struct Pattern {
+  std::vector<long> start;  // N + 1
+  std::vector<long> rows;
+  std::vector<long> table_offsets;  // T + 1
+  std::vector<int> table;
+};
+
+Pattern make_pattern(const EnrichedMesh& em) {
+  const long n = em.n;
+  const int tets = em.tets();
+  // DOF -> (tet, entry) incidence, CSR.
+  std::vector<long> first(n + 1, 0);
+  for (long d : em.dofs) ++first[d + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int> incident_tet(em.dofs.size());
+  {
+    std::vector<long> fill(first.begin(), first.end() - 1);
+    for (int t = 0; t < tets; ++t)
+      for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) incident_tet[fill[em.dofs[e]]++] = t;
+  }
+  Pattern p;
+  p.table_offsets.resize(tets + 1);
+  p.table_offsets[0] = 0;
+  for (int t = 0; t < tets; ++t) p.table_offsets[t + 1] = p.table_offsets[t] + long(em.size(t)) * em.size(t);
+  p.table.assign(p.table_offsets[tets], -1);
+  p.start.resize(n + 1);
+  p.start[0] = 0;
+  p.rows.reserve(static_cast<std::size_t>(n) * 16);
+  std::vector<long> mark(n, -1);
+  std::vector<int> index(n, 0);
+  for (long b = 0; b < n; ++b) {
+    const long begin = static_cast<long>(p.rows.size());
+    for (long i = first[b]; i < first[b + 1]; ++i) {
+      const int t = incident_tet[i];
+      for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) {
+        const long a = em.dofs[e];
+        if (a >= b && mark[a] != b) {
+          mark[a] = b;
+          p.rows.push_back(a);
+        }
+      }
+    }
+    std::sort(p.rows.begin() + begin, p.rows.end());
+    for (long r = begin; r < static_cast<long>(p.rows.size()); ++r) index[p.rows[r]] = static_cast<int>(r - begin);
+    p.start[b + 1] = static_cast<long>(p.rows.size());
+    for (long i = first[b]; i < first[b + 1]; ++i) {
+      const int t = incident_tet[i];
+      const int size = em.size(t);
+      const long base = em.offsets[t];
+      int col = 0;
+      while (em.dofs[base + col] != b) ++col;
+      for (int q = 0; q < size; ++q) {
+        const long a = em.dofs[base + q];
+        if (a >= b) p.table[p.table_offsets[t] + q * size + col] = index[a];
+      }
+    }
+  }
+  return p;
+}
+
+// Adds the lower part of element matrix k (3|C| x 3|C|) of tet t into the CSC arrays.
+template <class Matrix>
+void scatter(const EnrichedMesh& em, const Pattern& p, const std::vector<int>& outer, int t, const Matrix& k,
+             double* values) {
+  const int size = em.size(t);
+  const long base = em.offsets[t];
+  const int* table = p.table.data() + p.table_offsets[t];
+  for (int col = 0; col < size; ++col) {
+    const long b = em.dofs[base + col];
+    for (int q = 0; q < size; ++q) {
+      const int r = table[q * size + col];
+      if (r < 0) continue;
+      for (int i = 0; i < 3; ++i) {
+        // Column 3b+i lists rows 3b+i..3b+2 (its diagonal block), then 3 rows per further DOF.
+        double* column = values + outer[3 * b + i];
+        if (r == 0) {
+          for (int j = i; j < 3; ++j) column[j - i] += k(3 * q + j, 3 * col + i);
+        } else {
+          double* at = column + (3 - i) + 3 * (r - 1);
+          for (int j = 0; j < 3; ++j) at[j] += k(3 * q + j, 3 * col + i);
+        }
+      }
+    }
+  }
+}
+
+// The closed-form stiffness of a plain tet (tet_stiffness, formula (5) with constant gradients)
+// computed block by block straight into K: only the lower blocks the table names, only the lower
+// half of diagonal blocks. Same arithmetic as tet_stiffness, about twice as fast as computing the
+// full 12 x 12 matrix and scattering it.
+void scatter_plain_tet(const EnrichedMesh& em, const Pattern& p, const std::vector<int>& outer, int t,
+                       const Lame& material, double* values) {
+  const TetShape shape = tet_shape(em.mesh, t);
+  const double v = std::abs(shape.volume);
+  const double mu = material.mu * v, la = material.lambda * v;
+  const Eigen::Matrix<double, 4, 3>& g = shape.grad;
+  const int* table = p.table.data() + p.table_offsets[t];
+  const long base = em.offsets[t];
+  for (int col = 0; col < 4; ++col) {
+    const long b = em.dofs[base + col];
+    const int lp = em.local[base + col];
+    const double gp[3] = {g(lp, 0), g(lp, 1), g(lp, 2)};
+    for (int q = 0; q < 4; ++q) {
+      const int r = table[q * 4 + col];
+      if (r < 0) continue;
+      const int lq = em.local[base + q];
+      const double gq[3] = {g(lq, 0), g(lq, 1), g(lq, 2)};
+      const double dot = mu * (gq[0] * gp[0] + gq[1] * gp[1] + gq[2] * gp[2]);
+      for (int i = 0; i < 3; ++i) {
+        double* column = values + outer[3 * b + i];
+        // k(3q+j, 3col+i) = mu gq_i gp_j + lambda gq_j gp_i + delta_ij mu gq.gp
+        const double a = mu * gq[i], c = la * gp[i];
+        if (r == 0) {
+          column[0] += a * gp[i] + c * gq[i] + dot;
+          for (int j = i + 1; j < 3; ++j) column[j - i] += a * gp[j] + c * gq[j];
+        } else {
+          double* at = column + (3 - i) + 3 * (r - 1);
+          for (int j = 0; j < 3; ++j) at[j] += a * gp[j] + c * gq[j] + (i == j ? dot : 0.0);
+        }
+      }
+    }
+  }
+}
+
+// Every face of every tet, as sorted node triples with the tet, sorted: a face of one tet is on
+// the boundary, a face of two is shared.
+struct Face {
+  std::array<int, 3> nodes;
+  int tet;
+  bool operator<(const Face& o) const { return nodes < o.nodes || (nodes == o.nodes && tet < o.tet); }
+};
+std::vector<Face> all_faces(const TetMesh& mesh) {
+  std::vector<Face> faces;
+  faces.reserve(static_cast<std::size_t>(mesh.tets.rows()) * 4);
+  for (int t = 0; t < mesh.tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      Face f{{0, 0, 0}, t};
+      int c = 0;
+      for (int k = 0; k < 4; ++k)
+        if (k != skip) f.nodes[c++] = mesh.tets(t, k);
+      std::sort(f.nodes.begin(), f.nodes.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+}  // namespace
+
+SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
+                              AssemblyStats* stats, const std::function<void(double)>& progress,
+                              int conforming_order) {
+  AssemblyStats local;
+  AssemblyStats& s = stats ? *stats : local;
+  auto clock = std::chrono::steady_clock::now();
+  const Pattern p = make_pattern(em);
+  // Scalar columns: 3b+i holds 3 |rows(b)| - i entries.
+  const long n = em.n;
+  std::vector<int> outer(3 * n + 1, 0);
+  for (long b = 0; b < n; ++b) {
+    const long count = p.start[b + 1] - p.start[b];
+    for (int i = 0; i < 3; ++i) {
+      const long next = outer[3 * b + i] + 3 * count - i;
+      if (next > std::numeric_limits<int>::max())
+        throw Error("stiffness matrix: more than 2^31 nonzeros, too large for one machine");
+      outer[3 * b + i + 1] = static_cast<int>(next);
+    }
+  }
+  SparseMatrix K(static_cast<int>(3 * n), static_cast<int>(3 * n));
+  K.resizeNonZeros(outer.back());
+  std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
+  int* inner = K.innerIndexPtr();
+  for (long b = 0; b < n; ++b)
+    for (int i = 0; i < 3; ++i) {
+      int* at = inner + outer[3 * b + i];
+      for (int j = i; j < 3; ++j) *at++ = static_cast<int>(3 * b + j);
+      for (long r = p.start[b] + 1; r < p.start[b + 1]; ++r)
+        for (int j = 0; j < 3; ++j) *at++ = static_cast<int>(3 * p.rows[r] + j);
+    }
+  double* values = K.valuePtr();
+  std::fill(values, values + outer.back(), 0.0);
+  s.pattern_seconds += seconds_since(clock);
+
+  // Plain tets first (closed form), enriched ones second (oversampling), each timed on its own.
+  const int tets = em.tets();
+  std::vector<int> enriched;
+  clock = std::chrono::steady_clock::now();
+  for (int t = 0; t < tets; ++t) {
+    if (!em.plain(t)) {
+      enriched.push_back(t);
+      continue;
+    }
+    scatter_plain_tet(em, p, outer, t, material, values);
+    if (progress && (t & 0xffff) == 0) progress(double(t) / tets);
+  }
+  s.standard_tets += tets - static_cast<long>(enriched.size());
+  s.standard_seconds += seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  // The conforming rule (conforming_quadrature.h) splits the cut elements once, then integrates
+  // every enriched tet on its own points; otherwise the oversampling `rule`.
+  const CutElementSplits splits = conforming_order > 0 ? split_cut_elements(em) : CutElementSplits();
+  // Element matrices in a few threads, a batch at a time, then added to K in the tets' order.
+  // Each run of `chunk` consecutive tets shares one face-integral cache (a face's integrals
+  // computed once for its two tets when both are in the run): the runs do not depend on the
+  // thread count, so neither does K, bit for bit.
+  const long chunk = 32, batch = 32 * chunk;
+  std::vector<Eigen::MatrixXd> ks(static_cast<std::size_t>(std::min<long>(batch, static_cast<long>(enriched.size()))));
+  for (long first = 0; first < static_cast<long>(enriched.size()); first += batch) {
+    const long count = std::min<long>(batch, static_cast<long>(enriched.size()) - first);
+    parallel_for(count, [&](long begin, long end) {
+      PointRule points;
+      FaceIntegralCache faces;
+      for (long i = begin; i < end; ++i) {
+        const int t = enriched[static_cast<std::size_t>(first + i)];
+        if (conforming_order > 0) {
+          conforming_rule(em, splits, t, conforming_order, points);
+          element_stiffness_at_points(em, t, points, material, ks[i], conforming_order, &faces);
+        } else {
+          element_stiffness(em, t, rule, material, ks[i]);
+        }
+      }
+    }, {}, chunk);
+    for (long i = 0; i < count; ++i) scatter(em, p, outer, enriched[static_cast<std::size_t>(first + i)], ks[i], values);
+    if (progress) progress(static_cast<double>(tets - static_cast<long>(enriched.size()) + first + count) / tets);
+  }
+  s.enriched_tets += static_cast<long>(enriched.size());
+  s.enriched_seconds += seconds_since(clock);
+  if (progress) progress(1.0);
+  return K;
+}
+
+Eigen::VectorXd load_vector(const EnrichedMesh& em, const Problem& problem) {
+  const TetMesh& mesh = em.mesh;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * em.n);
+  if (problem.body_force.squaredNorm() > 0)
+    for (int t = 0; t < em.tets(); ++t) {
+      const double v = signed_volume(mesh, t);
+      for (int c = 0; c < 4; ++c) f.segment<3>(3 * mesh.tets(t, c)) += problem.body_force * (v / 4.0);
+    }
+  if (problem.neumann.empty()) return f;
+  const std::vector<Face> faces = all_faces(mesh);
+  for (std::size_t c = 0; c < problem.neumann.size(); ++c) {
+    const NeumannCondition& nc = problem.neumann[c];
+    const std::string what = describe(problem, "neumann", c);
+    std::vector<char> selected(mesh.points.rows(), 0);
+    for (int k : select_nodes(nc.selector, mesh, what)) selected[k] = 1;
+    long count = 0;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const bool shared = (i > 0 && faces[i - 1].nodes == faces[i].nodes) ||
+                          (i + 1 < faces.size() && faces[i + 1].nodes == faces[i].nodes);
+      const auto& v = faces[i].nodes;
+      if (shared || !selected[v[0]] || !selected[v[1]] || !selected[v[2]]) continue;
+      const Eigen::Vector3d a = mesh.points.row(v[0]), b = mesh.points.row(v[1]), d = mesh.points.row(v[2]);
+      const double area = 0.5 * (b - a).cross(d - a).norm();
+      for (int k : v) f.segment<3>(3 * k) += nc.traction * (area / 3.0);
+      ++count;
+    }
+    if (count == 0) throw Error(what + " selects no boundary face (all three nodes of a face must be selected)");
+  }
+  return f;
+}
+
+namespace {
+
+// Per node, the first of its 4 branch DOF vectors (paper 3.3 numbering), or -1.
+std::vector<long> branch_dof_of_node(const EnrichedMesh& em) {
+  std::vector<long> first(em.mesh.points.rows(), -1);
+  for (int t = 0; t < em.tets(); ++t)
+    for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
+      if (em.dofs[e] >= em.np + em.ns) {
+        long& f = first[em.mesh.tets(t, em.local[e])];
+        f = f < 0 ? em.dofs[e] : std::min(f, em.dofs[e]);
+      }
+  return first;
+}
+
+}  // namespace
+
+void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<long>& fixed,
+                    std::vector<double>& values) {
+  std::map<long, std::pair<double, std::size_t>> prescribed;  // dof -> (value, condition)
+  static const char* axis = "xyz";
+  std::vector<long> branch_of;  // built on first need
+  const double diagonal = (em.mesh.points.colwise().maxCoeff() - em.mesh.points.colwise().minCoeff()).norm();
+  for (std::size_t c = 0; c < problem.dirichlet.size(); ++c) {
+    const DirichletCondition& d = problem.dirichlet[c];
+    const std::string what = describe(problem, "dirichlet", c);
+    auto prescribe = [&](long dof, double v) {
+      const auto [it, inserted] = prescribed.emplace(dof, std::make_pair(v, c));
+      if (!inserted && it->second.first != v) {
+        const long vector = dof / 3;
+        const std::string where = vector < em.np ? "node " + std::to_string(vector) : "DOF vector " + std::to_string(vector);
+        throw Error(what + " and " + describe(problem, "dirichlet", it->second.second).substr(problem.file.size() + 2) +
+                    " prescribe different values for " + where + " component " + axis[dof % 3]);
+      }
+    };
+    for (int k : select_nodes(d.selector, em.mesh, what)) {
+      if (!d.exact) {
+        for (int i = 0; i < 3; ++i)
+          if (d.value[i]) prescribe(3L * k + i, *d.value[i]);
+        continue;
+      }
+      // The exact field at the node, on the node's own side (decided once, by xfem-classify).
+      const Eigen::Vector3d x = em.mesh.points.row(k).transpose();
+      const int side = em.side.empty() ? 1 : em.side[k];
+      Eigen::Vector3d u = d.exact->displacement(x, side);
+      if (d.exact_enriched) {
+        if (branch_of.empty()) branch_of = branch_dof_of_node(em);
+        if (branch_of[k] >= 0) {
+          // u_h(x_k) = U_k + sum_j F_j(x_k) A_kj (unshifted ACTFs, paper 3.4): A_kj = the field's
+          // coefficients, U_k what the ACTFs leave of u(x_k) (0 when every node is enriched).
+          const CrackTipFrame frame = em.front.frame(x);
+          Eigen::Matrix<double, 3, 4> C;
+          try {
+            C = d.exact->williams.branch_coefficients(frame, 1e-8 * diagonal);
+          } catch (const Error& e) {
+            throw Error(what + ", node " + std::to_string(k) + ": " + e.what());
+          }
+          u -= C * branch_functions(frame, x, side).F;
+          for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 3; ++i) prescribe(3 * (branch_of[k] + j) + i, C(i, j));
+        }
+      }
+      for (int i = 0; i < 3; ++i) prescribe(3L * k + i, u[i]);
+    }
+  }
+  fixed.clear();
+  values.clear();
+  for (const auto& [dof, v] : prescribed) {
+    fixed.push_back(dof);
+    values.push_back(v.first);
+  }
+}
+
+std::vector<long> unsupported_dofs(const SparseMatrix& K, long first) {
+  std::vector<long> out;
+  for (long k = first; 3 * k + 2 < K.cols(); ++k) {
+    bool zero = true;
+    for (int i = 0; i < 3 && zero; ++i) {
+      const int c = static_cast<int>(3 * k + i);
+      const int begin = K.outerIndexPtr()[c], end = K.outerIndexPtr()[c + 1];
+      zero = begin == end || K.innerIndexPtr()[begin] != c || K.valuePtr()[begin] == 0.0;
+    }
+    if (zero) out.push_back(k);
+  }
+  return out;
+}
+
+LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int points, int refine,
+                             AssemblyStats* stats,
+                             const std::function<void(double)>& progress) {
+  AssemblyStats local;
+  AssemblyStats& s = stats ? *stats : local;
+  LinearSystem sys;
+  sys.np = em.np;
+  sys.ns = em.ns;
+  sys.nb = em.nb;
+  sys.n = em.n;
+  const bool conforming = problem.rule == Problem::Rule::Conforming;
+  if (!em.cuts.empty() && !conforming)
+    throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
+  sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
+                           conforming ? problem.order : 0);
+  const auto clock = std::chrono::steady_clock::now();
+  sys.f = load_vector(em, problem);
+  dirichlet_data(em, problem, sys.fixed, sys.fixed_values);
+  std::vector<char> node_constrained(em.mesh.points.rows(), 0);
+  for (long dof : sys.fixed)  // enriched DOFs (exact conditions) do not hold a piece in place
+    if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
+  sys.pieces = em.cuts.empty() ? find_pieces(em, node_constrained) : find_pieces_several(em, node_constrained);
+  sys.coordinates = em.mesh.points;
+  s.load_seconds += seconds_since(clock);
+  return sys;
+}
+
+}  // namespace xfem

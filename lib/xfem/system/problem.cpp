@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/system/problem.h"
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+
+#include "xfem/core/boundary_groups.h"
+#include "xfem/core/error.h"
+
+namespace xfem {
+namespace {
+
+// A cursor into the JSON document that knows its path ("dirichlet[1].selector") for messages.
+struct Node {
+  const Json& j;
+  std::string file, path;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw Error(file + ": " + (path.empty() ? "" : path + " ") + what);
+  }
+  std::string child_path(const std::string& key) const { return path.empty() ? key : path + "." + key; }
+
+  void require_object(std::initializer_list<const char*> allowed) const {
+    if (!j.is_object()) fail("must be an object");
+    for (const auto& item : j.items()) {
+      bool known = false;
+      for (const char* a : allowed) known = known || item.key() == a;
+      if (!known) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        throw Error(file + ": unknown key '" + child_path(item.key()) + "' (allowed here: " + list + ")");
+      }
+    }
+  }
+  bool has(const char* key) const { return j.contains(key); }
+  Node at(const char* key) const {
+    if (!j.contains(key)) throw Error(file + ": missing field '" + child_path(key) + "'");
+    return {j.at(key), file, child_path(key)};
+  }
+  Node at(std::size_t i) const { return {j.at(i), file, path + "[" + std::to_string(i) + "]"}; }
+
+  double number() const {
+    if (!j.is_number()) fail("must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail("must be finite");
+    return v;
+  }
+  std::string string() const {
+    if (!j.is_string()) fail("must be a string");
+    return j.get<std::string>();
+  }
+  std::size_t array_size() const {
+    if (!j.is_array()) fail("must be a list");
+    return j.size();
+  }
+  Eigen::Vector3d vector3() const {
+    if (!j.is_array() || j.size() != 3) fail("must be a list of 3 numbers");
+    return Eigen::Vector3d(at(std::size_t{0}).number(), at(1).number(), at(2).number());
+  }
+};
+
+Selector parse_selector(const Node& n) {
+  n.require_object({"half_spaces", "box", "point_array", "group"});
+  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group");
+  Selector s;
+  if (n.has("half_spaces")) {
+    s.kind = Selector::Kind::HalfSpaces;
+    const Node list = n.at("half_spaces");
+    if (list.array_size() == 0) list.fail("must list at least one plane");
+    for (std::size_t i = 0; i < list.j.size(); ++i) {
+      const Node plane = list.at(i);
+      plane.require_object({"point", "normal"});
+      const Eigen::Vector3d p = plane.at("point").vector3(), normal = plane.at("normal").vector3();
+      if (normal.norm() == 0.0) plane.at("normal").fail("must not be zero");
+      s.planes.emplace_back(p, normal);
+    }
+  } else if (n.has("box")) {
+    s.kind = Selector::Kind::Box;
+    const Node box = n.at("box");
+    box.require_object({"lo", "hi"});
+    s.lo = box.at("lo").vector3();
+    s.hi = box.at("hi").vector3();
+    if ((s.hi.array() < s.lo.array()).any()) box.fail("is empty (hi must be >= lo in x, y and z)");
+  } else if (n.has("group")) {
+    s.kind = Selector::Kind::Group;
+    s.array = n.at("group").string();
+    if (s.array.empty()) n.at("group").fail("must name a group");
+  } else {
+    s.kind = Selector::Kind::PointArray;
+    s.array = n.at("point_array").string();
+  }
+  return s;
+}
+
+Eigen::Vector3d unit(const Node& n) {
+  const Eigen::Vector3d v = n.vector3();
+  if (v.norm() == 0.0) n.fail("must not be zero");
+  return v.normalized();
+}
+
+double optional_number(const Node& n, const char* key, double fallback) {
+  return n.has(key) ? n.at(key).number() : fallback;
+}
+
+void check_material(const Node& n, double E, double nu) {
+  if (!(E > 0)) n.fail("E must be positive, got " + short_number(E));
+  if (!(nu > -1.0 && nu < 0.5)) n.fail("nu must lie in (-1, 0.5), got " + short_number(nu));
+}
+
+RigidMotion parse_rigid_motion(const Node& n) {
+  n.require_object({"translation", "rotation", "centre"});
+  RigidMotion m;
+  if (n.has("translation")) m.translation = n.at("translation").vector3();
+  if (n.has("rotation")) m.rotation = n.at("rotation").vector3();
+  if (n.has("centre")) m.centre = n.at("centre").vector3();
+  return m;
+}
+
+ExactField parse_exact(const Node& n, const std::optional<std::pair<double, double>>& material) {
+  n.require_object({"williams", "rigid", "linear", "penny"});
+  if (n.j.size() != 1) n.fail("must have exactly one of williams, rigid, linear, penny");
+  ExactField f;
+  if (n.has("williams")) {
+    const Node w = n.at("williams");
+    w.require_object({"origin", "ahead", "normal", "K1", "K2", "K3", "E", "nu"});
+    f.kind = ExactField::Kind::Williams;
+    WilliamsField& W = f.williams;
+    W.origin = w.at("origin").vector3();
+    W.a = unit(w.at("ahead"));
+    W.b = unit(w.at("normal"));
+    if (std::abs(W.a.dot(W.b)) > 1e-9) w.fail("ahead and normal must be perpendicular");
+    W.K1 = optional_number(w, "K1", 0.0);
+    W.K2 = optional_number(w, "K2", 0.0);
+    W.K3 = optional_number(w, "K3", 0.0);
+    if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
+    W.E = w.has("E") ? w.at("E").number() : material->first;
+    W.nu = w.has("nu") ? w.at("nu").number() : material->second;
+    check_material(w, W.E, W.nu);
+  } else if (n.has("penny")) {
+    const Node w = n.at("penny");
+    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu"});
+    f.kind = ExactField::Kind::Penny;
+    PennyField& P = f.penny;
+    if (w.has("centre")) P.centre = w.at("centre").vector3();
+    P.normal = unit(w.at("normal"));
+    P.radius = w.at("radius").number();
+    if (!(P.radius > 0)) w.at("radius").fail("must be positive, got " + short_number(P.radius));
+    P.sigma = w.at("sigma").number();
+    if (w.has("shear")) {
+      P.shear = w.at("shear").vector3();
+      if (std::abs(P.shear.dot(P.normal)) > 1e-9 * P.shear.norm())
+        w.at("shear").fail("must lie in the disc's plane (perpendicular to normal)");
+    }
+    if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
+    P.E = w.has("E") ? w.at("E").number() : material->first;
+    P.nu = w.has("nu") ? w.at("nu").number() : material->second;
+    check_material(w, P.E, P.nu);
+  } else if (n.has("linear")) {
+    const Node l = n.at("linear");
+    l.require_object({"gradient", "translation"});
+    f.kind = ExactField::Kind::Linear;
+    const Node g = l.at("gradient");
+    if (g.array_size() != 3) g.fail("must be a list of 3 rows of 3 numbers");
+    for (std::size_t i = 0; i < 3; ++i) f.linear_gradient.row(static_cast<Eigen::Index>(i)) = g.at(i).vector3().transpose();
+    if (l.has("translation")) f.linear_translation = l.at("translation").vector3();
+  } else {
+    const Node r = n.at("rigid");
+    r.require_object({"above", "below"});
+    f.kind = ExactField::Kind::Rigid;
+    if (r.has("above")) f.above = parse_rigid_motion(r.at("above"));
+    if (r.has("below")) f.below = parse_rigid_motion(r.at("below"));
+  }
+  return f;
+}
+
+std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
+
+}  // namespace
+
+Problem parse_problem(const Json& j, const std::string& file) {
+  const Node root{j, file, ""};
+  root.require_object({"description", "material", "integration", "dirichlet", "neumann", "body_force"});
+  Problem p;
+  p.file = file;
+  if (root.has("description")) root.at("description").string();
+  const Node material = root.at("material");
+  material.require_object({"E", "nu"});
+  p.E = material.at("E").number();
+  if (!(p.E > 0)) material.at("E").fail("must be positive, got " + material.at("E").j.dump());
+  p.nu = material.at("nu").number();
+  if (!(p.nu > -1.0 && p.nu < 0.5)) material.at("nu").fail("must lie in (-1, 0.5), got " + material.at("nu").j.dump());
+  if (root.has("integration")) {
+    const Node integration = root.at("integration");
+    integration.require_object({"points", "refine", "rule", "order"});
+    if (integration.has("rule")) {
+      const Node rule = integration.at("rule");
+      const std::string name = rule.string();
+      if (name != "oversampling" && name != "conforming")
+        rule.fail("must be \"oversampling\" or \"conforming\", got \"" + name + "\"");
+      p.rule = name == "conforming" ? Problem::Rule::Conforming : Problem::Rule::Oversampling;
+    } else if (integration.has("points") || integration.has("refine")) {
+      p.rule = Problem::Rule::Oversampling;  // files written before the conforming default keep their meaning
+    }
+    if (integration.has("order")) {
+      const Node order = integration.at("order");
+      if (!order.j.is_number_integer() || order.j.get<long>() < 1 || order.j.get<long>() > 20)
+        order.fail("must be an integer in 1..20, got " + order.j.dump());
+      p.order = order.j.get<int>();
+    }
+    if (integration.has("points")) {
+      const Node points = integration.at("points");
+      if (!points.j.is_number_integer() || points.j.get<long>() < 1 || points.j.get<long>() > 100000)
+        points.fail("must be an integer in 1..100000, got " + points.j.dump());
+      p.points = points.j.get<int>();
+    }
+    if (integration.has("refine")) {
+      const Node refine = integration.at("refine");
+      if (!refine.j.is_number_integer() || refine.j.get<long>() < 0 || refine.j.get<long>() > 8)
+        refine.fail("must be an integer in 0..8, got " + refine.j.dump());
+      p.refine = refine.j.get<int>();
+    }
+  }
+  if (root.has("dirichlet")) {
+    const Node list = root.at("dirichlet");
+    for (std::size_t i = 0; i < list.array_size(); ++i) {
+      const Node c = list.at(i);
+      c.require_object({"name", "selector", "value", "exact", "enriched_dofs"});
+      DirichletCondition d;
+      d.name = optional_name(c);
+      d.selector = parse_selector(c.at("selector"));
+      if (c.has("exact")) {
+        if (c.has("value")) c.fail("must have one of value, exact, not both");
+        d.exact = parse_exact(c.at("exact"), std::make_pair(p.E, p.nu));
+        if (c.has("enriched_dofs")) {
+          const Node e = c.at("enriched_dofs");
+          const std::string mode = e.string();
+          if (mode != "free" && mode != "exact") e.fail("must be \"free\" or \"exact\", got \"" + mode + "\"");
+          d.exact_enriched = mode == "exact";
+          if (d.exact_enriched && d.exact->kind != ExactField::Kind::Williams)
+            e.fail("\"exact\" needs a williams field (a rigid motion has no crack-tip coefficients)");
+        }
+        p.dirichlet.push_back(d);
+        continue;
+      }
+      if (c.has("enriched_dofs")) c.at("enriched_dofs").fail("applies to an exact condition only");
+      const Node value = c.at("value");
+      if (!value.j.is_array() || value.j.size() != 3) value.fail("must be a list of 3 numbers or nulls");
+      bool any = false;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (!value.j[k].is_null()) {
+          d.value[k] = value.at(k).number();
+          any = true;
+        }
+      if (!any) value.fail("leaves every component free (null): the condition does nothing");
+      p.dirichlet.push_back(d);
+    }
+  }
+  if (root.has("neumann")) {
+    const Node list = root.at("neumann");
+    for (std::size_t i = 0; i < list.array_size(); ++i) {
+      const Node c = list.at(i);
+      c.require_object({"name", "selector", "traction"});
+      NeumannCondition nc;
+      nc.name = optional_name(c);
+      nc.selector = parse_selector(c.at("selector"));
+      nc.traction = c.at("traction").vector3();
+      p.neumann.push_back(nc);
+    }
+  }
+  if (root.has("body_force")) p.body_force = root.at("body_force").vector3();
+  return p;
+}
+
+Problem read_problem(const std::string& path) {
+  if (!std::ifstream(path)) throw Error(path + ": cannot open the problem file (does it exist?)");
+  return parse_problem(read_json(path), path);
+}
+
+ExactField parse_exact_field(const Json& j, const std::string& file, const std::string& path,
+                             const std::optional<std::pair<double, double>>& material) {
+  return parse_exact(Node{j, file, path}, material);
+}
+
+ExactField read_exact_field(const std::string& path) {
+  if (!std::ifstream(path)) throw Error(path + ": cannot open the exact-field file (does it exist?)");
+  return parse_exact_field(read_json(path), path, "");
+}
+
+std::string describe(const Problem& p, const char* list, std::size_t i) {
+  const std::string& name = std::string(list) == "dirichlet" ? p.dirichlet.at(i).name : p.neumann.at(i).name;
+  return p.file + ": " + list + "[" + std::to_string(i) + "]" + (name.empty() ? "" : " ('" + name + "')");
+}
+
+std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std::string& what) {
+  const Eigen::Index np = mesh.points.rows();
+  const DataArray* array = nullptr;
+  if (s.kind == Selector::Kind::PointArray) {
+    const auto it = mesh.point_data.find(s.array);
+    if (it == mesh.point_data.end()) throw Error(what + ": the mesh has no point array '" + s.array + "'");
+    if (it->second.components != 1 || static_cast<Eigen::Index>(it->second.tuples()) != np)
+      throw Error(what + ": point array '" + s.array + "' must have 1 component per point");
+    array = &it->second;
+  }
+  if (s.kind == Selector::Kind::Group) {
+    const auto it = mesh.point_data.find(group_array_name(s.array));
+    if (it == mesh.point_data.end()) {
+      std::string names;
+      for (const std::string& g : group_names(mesh)) names += (names.empty() ? "'" : ", '") + g + "'";
+      throw Error(what + ": the mesh has no group '" + s.array + "' (" +
+                  (names.empty() ? std::string("it has no groups: name them as gmsh physical groups, docs/FORMATS.md")
+                                 : "its groups: " + names) + ")");
+    }
+    if (it->second.components != 1 || static_cast<Eigen::Index>(it->second.tuples()) != np)
+      throw Error(what + ": point array '" + it->first + "' must have 1 component per point");
+    array = &it->second;
+  }
+  std::vector<int> nodes;
+  for (Eigen::Index k = 0; k < np; ++k) {
+    const Eigen::Vector3d x = mesh.points.row(k).transpose();
+    bool in = true;
+    switch (s.kind) {
+      case Selector::Kind::HalfSpaces:
+        for (const auto& [point, normal] : s.planes) in = in && (x - point).dot(normal) > 0;
+        break;
+      case Selector::Kind::Box:
+        in = (x.array() >= s.lo.array()).all() && (x.array() <= s.hi.array()).all();
+        break;
+      case Selector::Kind::PointArray:
+      case Selector::Kind::Group:
+        in = (*array)(k) != 0.0;
+        break;
+    }
+    if (in) nodes.push_back(static_cast<int>(k));
+  }
+  if (nodes.empty()) throw Error(what + " selects no node");
+  return nodes;
+}
+
+}  // namespace xfem

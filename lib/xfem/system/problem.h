@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Dense>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "xfem/fracture/exact_fields.h"
+#include "xfem/core/json_io.h"
+#include "xfem/core/mesh.h"
+
+namespace xfem {
+
+/// Which mesh nodes a boundary condition acts on (problem.json, docs/FORMATS.md).
+struct Selector {
+  enum class Kind { HalfSpaces, Box, PointArray, Group };
+  Kind kind = Kind::HalfSpaces;
+  /// HalfSpaces: node x selected when (x - point) . normal > 0 strictly for every plane (the
+  /// convention of the paper's code). Normals need not be unit vectors.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> planes;  ///< (point, normal), metres
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< Box: lo <= x <= hi (closed)
+  std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero; Group: the group's name,
+                      ///< its nodes are where the point array group_<name> is nonzero (boundary_groups.h)
+};
+
+/// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
+/// enriched DOFs stay free). A missing (null) component is left free.
+/// With `exact` set instead of `value`, every selected node gets the exact field's displacement
+/// at the node, on the node's own side of the cut (array `side`; docs/FORMATS.md "problem.json").
+struct DirichletCondition {
+  std::string name;  ///< optional, for messages
+  Selector selector;
+  std::array<std::optional<double>, 3> value;  ///< metres
+  std::optional<ExactField> exact;             ///< the exact field prescribed instead of `value`
+  /// With `exact`: also prescribe the 4 branch DOF vectors of selected branch-enriched nodes
+  /// (the field's crack-tip coefficients, WilliamsField::branch_coefficients) and shift the
+  /// original DOF so that the discrete field equals the exact one at the node. false: the
+  /// enriched DOFs stay free (DESIGN.md), an approximation at branch nodes.
+  bool exact_enriched = false;
+};
+
+/// Traction on the boundary faces whose three nodes are all selected, Pa (N/m^2).
+struct NeumannCondition {
+  std::string name;
+  Selector selector;
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();
+};
+
+/// A static linear-elastic problem: the contents of problem.json (docs/FORMATS.md).
+struct Problem {
+  std::string file;     ///< where it was read from, for messages
+  double E = 0.0;       ///< Young's modulus, Pa, > 0
+  double nu = 0.0;      ///< Poisson's ratio, in (-1, 0.5)
+  int points = 30;      ///< oversampling points requested per enriched tet (paper: 30 for the beam)
+  int refine = 0;       ///< levels of refinement at the cut in cut tets (0 = the paper's rule)
+  /// How tets with enriched DOFs are integrated: the paper's oversampling (points, refine), or the
+  /// cut-conforming, front-singular rule of conforming_quadrature.h with `order` Gauss points per
+  /// direction of every sub-tet.
+  enum class Rule { Oversampling, Conforming };
+  Rule rule = Rule::Conforming;
+  int order = 3;        ///< conforming rule: Gauss points per direction (1..20) where branch functions live
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<NeumannCondition> neumann;
+  Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
+};
+
+/// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
+/// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
+/// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box, e.g. "problem.json: material.E must be positive, got -3".
+Problem read_problem(const std::string& path);
+/// The same from parsed JSON; `file` names it in messages.
+Problem parse_problem(const Json& j, const std::string& file);
+
+/// Parses an exact field (docs/FORMATS.md "Exact fields"): {"williams": {...}} or {"rigid": {...}}.
+/// `path` locates it in messages ("dirichlet[0].exact"); `material` (E, nu) fills a Williams
+/// field's E and nu when they are not given (problem.json), else they are required.
+/// Throws xfem::Error "<file>: <path>... <problem>" like parse_problem.
+ExactField parse_exact_field(const Json& j, const std::string& file, const std::string& path,
+                             const std::optional<std::pair<double, double>>& material = std::nullopt);
+/// Reads a JSON file holding one exact field (xfem-rmserror --exact).
+ExactField read_exact_field(const std::string& path);
+
+/// Ids of the nodes `selector` selects, increasing. `what` names the condition in messages, e.g.
+/// "problem.json: dirichlet[1] ('pulled edge')". Throws xfem::Error "<what> selects no node", or
+/// when a named point array is missing or has more than one component, or a group is unknown
+/// ("<what>: the mesh has no group 'lid' (its groups: 'fixed', 'pulled')").
+std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
+
+/// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
+std::string describe(const Problem& p, const char* list, std::size_t i);
+
+}  // namespace xfem
