@@ -6,7 +6,7 @@
 #include "xfem/geometry/crack_front.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/classification_several_cuts.h"
 #include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
