@@ -113,6 +113,25 @@ std::vector<std::pair<int, int>> product_pairs(const DataArrays& point_data, con
 
 }  // namespace
 
+DofNumbering number_classified_mesh(TetMesh& mesh, const std::string& file) {
+  if (cut_count(mesh) > 1) return number_several_cuts(mesh, file);  // docs/FORMATS.md "Several cuts"
+  const std::size_t V = mesh.points.rows(), T = mesh.tets.rows();
+  const auto& enrichment = require_array(mesh.point_data, "enrichment", "point", 1, V, file, "xfem-classify");
+  const auto& cut_class = require_array(mesh.cell_data, "cut_class", "cell", 1, T, file, "xfem-classify");
+  require_array(mesh.point_data, "side", "point", 1, V, file, "xfem-classify");
+  const CrackFront front = read_front(mesh, file);
+  DofNumbering d;
+  try {
+    d = dof_numbering(mesh.tets, static_cast<long>(V), ints(enrichment), ints(cut_class));
+  } catch (const Error& e) {
+    throw Error(file + ": " + e.what());
+  }
+  if (d.nb > 0 && front.empty())
+    throw Error(file + ": " + std::to_string(d.nb) + " branch nodes but field array 'front_segments' is empty");
+  store_dof_numbering(d, mesh);
+  return d;
+}
+
 DofNumbering number_several_cuts(TetMesh& mesh, const std::string& file) {
   const int K = cut_count(mesh);
   if (K < 2 || K > kMaxCuts)

@@ -42,6 +42,12 @@ DofNumbering dof_numbering(const Tets& tets, long points, const std::vector<int>
 /// `branch_dof` (Int64).
 void store_dof_numbering(const DofNumbering& d, TetMesh& mesh);
 
+/// xfem-enrich: numbers the DOFs of a classified mesh (the arrays of xfem-classify in `mesh`, read
+/// from `file`) and stores the numbering on it, for one cut (dof_numbering, store_dof_numbering) or
+/// several (number_several_cuts). Throws xfem::Error naming `file` and the array missing or wrong,
+/// or branch nodes without a front.
+DofNumbering number_classified_mesh(TetMesh& mesh, const std::string& file);
+
 /// The DOF numbering of a classified mesh with several cuts (cut_count > 1), read from its arrays:
 /// originals 0..NP-1; then the one-vector enrichments: the sign DOFs of cut 0, of cut 1, ..., then
 /// the product DOFs of each pair (a, b) in increasing (a, b); then the branch DOFs (4 each) of cut 0,
