@@ -14,7 +14,7 @@
 #include "xfem/core/fingerprint.h"
 #include "xfem/system/linear_system.h"
 #include "xfem/system/problem.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/enriched_mesh.h"
 #include "xfem/system/reactions.h"
 #include "xfem/core/version.h"
 

@@ -8,7 +8,8 @@
 #include "xfem/core/error.h"
 #include "xfem/core/fingerprint.h"
 #include "xfem/core/json_io.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/classification_several_cuts.h"
+#include "xfem/enrich/cut_files.h"
 #include "xfem/core/version.h"
 #include "xfem/io/vtk_io.h"
 

@@ -6,7 +6,7 @@
 #include "xfem/geometry/crack_front.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/classification_several_cuts.h"
 #include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
@@ -29,31 +29,12 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     xfem::TetMesh mesh = xfem::read_tet_mesh(input, &warnings);
     for (const auto& w : warnings) xfem::cli::warn(w);
-    if (xfem::cut_count(mesh) > 1) {  // several cuts (docs/FORMATS.md "Several cuts")
-      const xfem::DofNumbering d = xfem::number_several_cuts(mesh, input);
-      xfem::write_tet_mesh(mesh, output);
-      xfem::cli::info(std::to_string(xfem::cut_count(mesh)) + " cuts: NP " + std::to_string(d.np) + ", NS " +
-                      std::to_string(d.ns) + " (sign and junction), NB " + std::to_string(d.nb) + ": N = " +
-                      std::to_string(d.n) + " displacements, " + std::to_string(3 * d.n) + " unknowns");
-      return;
-    }
-    const std::size_t V = mesh.points.rows(), T = mesh.tets.rows();
-    auto ints = [](const xfem::DataArray& a) { return std::vector<int>(a.values.begin(), a.values.end()); };
-    const auto& enrichment = xfem::require_array(mesh.point_data, "enrichment", "point", 1, V, input, "xfem-classify");
-    const auto& cut_class = xfem::require_array(mesh.cell_data, "cut_class", "cell", 1, T, input, "xfem-classify");
-    xfem::require_array(mesh.point_data, "side", "point", 1, V, input, "xfem-classify");
-    const xfem::CrackFront front = xfem::read_front(mesh, input);
-    xfem::DofNumbering d;
-    try {
-      d = xfem::dof_numbering(mesh.tets, static_cast<long>(V), ints(enrichment), ints(cut_class));
-    } catch (const xfem::Error& e) {
-      throw xfem::Error(input + ": " + e.what());
-    }
-    if (d.nb > 0 && front.empty())
-      throw xfem::Error(input + ": " + std::to_string(d.nb) + " branch nodes but field array 'front_segments' is empty");
-    xfem::store_dof_numbering(d, mesh);
+    const xfem::DofNumbering d = xfem::number_classified_mesh(mesh, input);
     xfem::write_tet_mesh(mesh, output);
-    xfem::cli::info("NP " + std::to_string(d.np) + ", NS " + std::to_string(d.ns) + ", NB " + std::to_string(d.nb) +
-                    ": N = " + std::to_string(d.n) + " displacements, " + std::to_string(3 * d.n) + " unknowns");
+    const int cuts = xfem::cut_count(mesh);
+    xfem::cli::info((cuts > 1 ? std::to_string(cuts) + " cuts: " : std::string()) + "NP " + std::to_string(d.np) +
+                    ", NS " + std::to_string(d.ns) + (cuts > 1 ? " (sign and junction)" : "") + ", NB " +
+                    std::to_string(d.nb) + ": N = " + std::to_string(d.n) + " displacements, " +
+                    std::to_string(3 * d.n) + " unknowns");
   });
 }

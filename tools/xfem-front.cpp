@@ -12,7 +12,7 @@
 #include "xfem/core/error.h"
 #include "xfem/io/matrix_market.h"
 #include "xfem/system/problem.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/enriched_mesh.h"
 #include "xfem/fracture/stress_intensity.h"
 
 namespace {

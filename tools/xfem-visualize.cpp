@@ -12,7 +12,7 @@
 #include "xfem/io/matrix_market.h"
 #include "xfem/io/paraview_script.h"
 #include "xfem/system/problem.h"
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/post/split_enriched_mesh.h"
 #include "xfem/system/reactions.h"
 #include "xfem/io/snapshot.h"
 #include "xfem/io/vtk_io.h"
@@ -104,10 +104,7 @@ int main(int argc, char** argv) {
                              cut_paths.size() == em.cuts.size() ? cut_paths[k] : cut_path);
     xfem::check_provenance(made_for, solution, "problem", xfem::fingerprint_json_file(problem_path), problem_path);
 
-    const xfem::SplitMesh split =
-        cut_path.empty()    ? xfem::unsplit_mesh(em.mesh, em.side)
-        : !em.cuts.empty() ? xfem::split_mesh_several(em)
-                           : xfem::split_mesh(em.mesh, em.side, em.cut_class, *em.cut, em.front.segments());
+    const xfem::SplitMesh split = xfem::split_mesh(em);
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +
                     std::to_string(split.split_partial) + " split behind the front: " +
                     std::to_string(split.tets.rows()) + " tets, " + std::to_string(split.points.rows()) + " points, " +

@@ -1,5 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "xfem/enrich/several_cuts.h"
+#include "xfem/enrich/classification_several_cuts.h"
+#include "xfem/enrich/cut_files.h"
+#include "xfem/enrich/dof_numbering.h"
+#include "xfem/enrich/side_codes.h"
+#include "xfem/integrate/cut_element_splits.h"
+#include "xfem/system/pieces.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -93,7 +98,7 @@ TEST_CASE("several cuts: two parallel cuts get one sign enrichment each, numbere
     if (e > o + 4) CHECK(em.dofs[e] > em.dofs[e - 1]);
   }
   // Three pieces, each region's volume exact: slab z < 0.5, 0.5 < z < 2.5, z > 2.5.
-  const auto v = volume_per_code(xfem::split_cut_elements_several(em));
+  const auto v = volume_per_code(xfem::split_cut_elements(em));
   REQUIRE(v.size() == 3);
   const int lo[2] = {-1, 1}, mid[2] = {1, 1}, hi[2] = {1, -1};  // cut 1's normal is -z
   CHECK(v.at(xfem::pack_sides(lo, 2)) == Approx(0.5).epsilon(1e-14));
@@ -101,7 +106,7 @@ TEST_CASE("several cuts: two parallel cuts get one sign enrichment each, numbere
   CHECK(v.at(xfem::pack_sides(hi, 2)) == Approx(0.5).epsilon(1e-14));
   std::vector<char> bottom(em.mesh.points.rows(), 0);
   for (Eigen::Index p = 0; p < em.mesh.points.rows(); ++p) bottom[p] = em.mesh.points(p, 2) == 0.0;
-  const auto pieces = xfem::find_pieces_several(em, bottom);
+  const auto pieces = xfem::find_pieces(em, bottom);
   REQUIRE(pieces.size() == 3);
   int held = 0;
   for (const auto& p : pieces) held += p.constrained;
@@ -126,7 +131,7 @@ TEST_CASE("several cuts: crossing cuts get the junction enrichment H_0 H_1 aroun
   CHECK(em.ns == em.cuts[0].ns + em.cuts[1].ns + em.products[0].count);
   // The regions inside the three cubes the cuts meet (x 0.5..1 / y 0..0.5, x 0.5..1 / y 0.5..1,
   // x 0..0.5 / y 0..0.5), 0.5 high: exact volumes.
-  const auto v = volume_per_code(xfem::split_cut_elements_several(em));
+  const auto v = volume_per_code(xfem::split_cut_elements(em));
   REQUIRE(v.size() == 4);
   const int a[2] = {-1, -1}, b[2] = {1, -1}, cc[2] = {-1, 1}, d[2] = {1, 1};
   CHECK(v.at(xfem::pack_sides(a, 2)) == Approx((0.1 * 0.4 + 0.5 * 0.4) * 0.5).epsilon(1e-13));
@@ -166,7 +171,7 @@ TEST_CASE("several cuts: a cut ending on another is a T-junction, no front there
   CHECK(xfem::cut_function(em, 1, below_right) == 0);
   // Three pieces: below cut 0, and above it on either side of cut 1.
   std::vector<char> none(em.mesh.points.rows(), 0);
-  const auto pieces = xfem::find_pieces_several(em, none);
+  const auto pieces = xfem::find_pieces(em, none);
   REQUIRE(pieces.size() == 3);
   // The nodes at z = 0.5, x = 1: their supports reach above cut 0 only right of cut 1, where g_1 is
   // +1 everywhere, and below it, where g_1 is 0: g_1 = (H_0 + 1) / 2 there, dependent on H_0: not

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <string>
 #include <vector>
 
 #include "xfem/core/mesh.h"
@@ -40,5 +41,24 @@ DofNumbering dof_numbering(const Tets& tets, long points, const std::vector<int>
 /// `extended_offsets`, `extended_dofs` (Int64), `extended_local` (Int32); point `sign_dof`,
 /// `branch_dof` (Int64).
 void store_dof_numbering(const DofNumbering& d, TetMesh& mesh);
+
+/// xfem-enrich: numbers the DOFs of a classified mesh (the arrays of xfem-classify in `mesh`, read
+/// from `file`) and stores the numbering on it, for one cut (dof_numbering, store_dof_numbering) or
+/// several (number_several_cuts). Throws xfem::Error naming `file` and the array missing or wrong,
+/// or branch nodes without a front.
+DofNumbering number_classified_mesh(TetMesh& mesh, const std::string& file);
+
+/// The DOF numbering of a classified mesh with several cuts (cut_count > 1), read from its arrays:
+/// originals 0..NP-1; then the one-vector enrichments: the sign DOFs of cut 0, of cut 1, ..., then
+/// the product DOFs of each pair (a, b) in increasing (a, b); then the branch DOFs (4 each) of cut 0,
+/// cut 1, ...; each block in increasing point order. NS counts all one-vector DOFs, NB all branch
+/// nodes: N = NP + NS + 4 NB as for one cut. C of a tet: its 4 nodes, then its nodes' one-vector
+/// DOFs if any cut cuts the tet, and their branch DOFs always, sorted by DOF id.
+/// Stores `dof_counts`, `extended_*`, `sign_dof`, `branch_dof` (cut 0), `sign_dof_k`,
+/// `branch_dof_k`, `product_dof_a_b` (point, Int64, -1 if none), `cut_dof_blocks` (field, Int64,
+/// 4 per cut: first sign DOF, sign count, first branch DOF, branch node count) and
+/// `product_dof_blocks` (field, Int64, 4 per pair: a, b, first DOF, count) on `mesh`.
+/// Throws xfem::Error naming the array that is missing or wrong.
+DofNumbering number_several_cuts(TetMesh& mesh, const std::string& file);
 
 }  // namespace xfem

@@ -1,18 +1,113 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enrich/enriched_basis.h"
-#include "xfem/enrich/several_cuts.h"
 
 #include <string>
 
 #include "xfem/enrich/branch_functions.h"
 #include "xfem/core/error.h"
 #include "xfem/enrich/heaviside.h"
+#include "xfem/enrich/side_codes.h"
 
 namespace xfem {
 
+namespace {
+
+/// enriched_basis for a mesh with several cuts: `code` is a side code (side_codes.h).
+void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int code,
+                        BasisAt& out) {
+  const int K = static_cast<int>(em.cuts.size());
+  const long begin = em.offsets[t];
+  const int n = em.size(t);
+  out.N.resize(n);
+  out.dN.resize(n, 3);
+  const Eigen::Vector4d N = shape.values(x);
+  int s[kMaxCuts];
+  bool have = false;
+  auto sides = [&]() -> const int* {
+    if (!have) {
+      if (code >= 2) {
+        for (int k = 0; k < K; ++k) s[k] = code_side(code, k);
+      } else if (code == 0) {
+        for (int k = 0; k < K; ++k) s[k] = em.cuts[k].cut->side(x);
+      } else {
+        throw Error("tet " + std::to_string(t) + ": side " + std::to_string(code) +
+                    " is not a side code of a mesh with several cuts (0 or >= 2)");
+      }
+      have = true;
+    }
+    return s;
+  };
+  int node_sides[4][kMaxCuts];
+  for (int l = 0; l < 4; ++l)
+    for (int k = 0; k < K; ++k) node_sides[l][k] = em.cuts[k].side[em.mesh.tets(t, l)];
+  bool cutting[kMaxCuts];
+  for (int k = 0; k < K; ++k) cutting[k] = em.cuts[k].cut_class[t] != 0;
+  int branch_cut = -1;
+  BranchValues F;
+  for (int e = 0; e < n; ++e) {
+    const long dof = em.dofs[begin + e];
+    const int l = em.local[begin + e];
+    if (dof < em.np) {
+      out.N[e] = N[l];
+      out.dN.row(e) = shape.grad.row(l);
+      continue;
+    }
+    if (dof < em.np + em.ns) {
+      // x's sides, except for the cuts that do not cut the tet: the node's own (the enrichment of
+      // a cut jumps only where it cuts; ahead of a front its plane extended is no discontinuity).
+      int xs[kMaxCuts];
+      // (For a node on the far side of the cut a junction cut ends on, x's own: see classify_cuts.)
+      for (int k = 0; k < K; ++k) {
+        const int i = em.cuts[k].ends_on;
+        const bool far = i >= 0 && node_sides[l][i] != em.cuts[k].ends_side;
+        xs[k] = cutting[k] || far ? sides()[k] : node_sides[l][k];
+      }
+      double psi = 0;
+      bool found = false;
+      for (int k = 0; k < K && !found; ++k) {
+        const CutLayer& c = em.cuts[k];
+        if (dof >= c.sign_first && dof < c.sign_first + c.ns) {
+          psi = 0.5 * (cut_function(em, k, xs) - cut_function(em, k, node_sides[l]));
+          found = true;
+        }
+      }
+      for (std::size_t p = 0; p < em.products.size() && !found; ++p) {
+        const ProductBlock& b = em.products[p];
+        if (dof >= b.first && dof < b.first + b.count) {
+          psi = 0.5 * (cut_function(em, b.a, xs) * cut_function(em, b.b, xs) -
+                       cut_function(em, b.a, node_sides[l]) * cut_function(em, b.b, node_sides[l]));
+          found = true;
+        }
+      }
+      if (!found) throw Error("tet " + std::to_string(t) + ": DOF " + std::to_string(dof) + " is in no cut's block");
+      out.N[e] = N[l] * psi;
+      out.dN.row(e) = psi * shape.grad.row(l);
+      continue;
+    }
+    const int k = branch_cut_of_dof(em, dof);
+    if (k < 0) throw Error("tet " + std::to_string(t) + ": DOF " + std::to_string(dof) + " is in no cut's block");
+    if (k != branch_cut) {
+      const CutLayer& c = em.cuts[k];
+      const TipCoordinates tc = c.front.coordinates(x);
+      int side = 0;
+      if (code >= 2)
+        side = code_side(code, k);
+      else if (tc.xa < 0)
+        side = sides()[k];
+      F = branch_functions(tc, side);
+      branch_cut = k;
+    }
+    const int j = static_cast<int>((dof - em.np - em.ns) % 4);
+    out.N[e] = N[l] * F.F[j];
+    out.dN.row(e) = F.F[j] * shape.grad.row(l) + N[l] * F.dF.row(j);
+  }
+}
+
+}  // namespace
+
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     BasisAt& out) {
-  if (!em.cuts.empty()) {  // several cuts: side is a side code (several_cuts.h)
+  if (!em.cuts.empty()) {  // several cuts: side is a side code (side_codes.h)
     several_cuts_basis(em, t, shape, x, side, out);
     return;
   }

@@ -21,6 +21,9 @@ struct BasisAt {
 /// `side` is H(x) to use (+1 / -1), so that a point on the cut can be evaluated on either face;
 /// 0 means "decide with the cut surface" (for the ACTFs only behind the front, xa < 0). Behind the
 /// front the side decides the face: theta = side * pi on the cut (branch_functions.h). The gradients of psi vanish (H is piecewise constant).
+/// With several cuts (em.cuts) `side` is a side code (side_codes.h) and the sign DOFs of cut k, the
+/// products and the branch DOFs of the tet's cut are evaluated with g_k (cut_function); the one cut
+/// keeps its own loop, on +1 / -1 and em.side (its bits must not change).
 /// Throws xfem::Error if a sign DOF needs H(x) with side 0 and no cut, or a branch DOF meets an
 /// empty front.
 void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side, BasisAt& out);

@@ -4,6 +4,10 @@
 #include <string>
 
 #include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
+#include "xfem/enrich/classification_several_cuts.h"
+#include "xfem/enrich/cut_files.h"
+#include "xfem/enrich/side_codes.h"
 #include "xfem/io/vtk_io.h"
 
 namespace xfem {
@@ -11,6 +15,7 @@ namespace xfem {
 namespace {
 
 std::vector<long> to_long(const DataArray& a) { return std::vector<long>(a.values.begin(), a.values.end()); }
+std::vector<int> ints(const DataArray& a) { return std::vector<int>(a.values.begin(), a.values.end()); }
 
 }  // namespace
 
@@ -75,7 +80,7 @@ EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_p
   if (em.nb > 0 && em.front.empty() && !m.field_data.count("cut_count"))  // several cuts: checked per cut
     fail(std::to_string(em.nb) + " branch-enriched points but the fields 'front_segments' are empty");
   if (!cut_path.empty()) {
-    // A mesh classified with several cuts is read by read_enriched_mesh_cuts (several_cuts.h) only.
+    // A mesh classified with several cuts is read by read_enriched_mesh_cuts only.
     const auto count = m.field_data.find("cut_count");
     if (count != m.field_data.end() && !count->second.values.empty() && count->second.values[0] > 1)
       fail("classified with " + std::to_string(static_cast<long>(count->second.values[0])) +
@@ -83,6 +88,111 @@ EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_p
     em.cut = std::make_shared<const CutSurface>(read_triangle_mesh(cut_path, warnings));
   }
   return em;
+}
+
+EnrichedMesh read_enriched_mesh_cuts(const std::string& vtu, const std::vector<std::string>& cut_paths,
+                                     std::vector<std::string>* warnings) {
+  EnrichedMesh em = read_enriched_mesh(vtu, "", warnings);
+  std::vector<std::string> names;
+  std::vector<TriangleMesh> cuts = read_cuts(cut_paths, names, warnings);
+  const TetMesh& m = em.mesh;
+  const int K = cut_count(m);
+  if (K < 1 || K > kMaxCuts)
+    throw Error(vtu + ": field array 'cut_count' is " + std::to_string(K) + ", expected 1.." + std::to_string(kMaxCuts));
+  if (K == 1) {
+    if (cuts.size() > 1)
+      throw Error(vtu + ": classified with one cut, but " + std::to_string(cuts.size()) + " cuts are given");
+    if (cuts.size() == 1) {
+      check_cut_matches(m, vtu, cuts[0], names[0]);
+      em.cut = std::make_shared<const CutSurface>(std::move(cuts[0]));
+    }
+    return em;
+  }
+  if (static_cast<int>(cuts.size()) != K)
+    throw Error(vtu + ": classified with " + std::to_string(K) + " cuts, but " + std::to_string(cuts.size()) +
+                " are given (--cut once per cut, in the order given to xfem-classify)");
+  const std::size_t V = m.points.rows(), T = m.tets.rows();
+  for (int k = 0; k < K; ++k) {
+    Fingerprint recorded = 0;
+    if (stored_fingerprint(m.field_data, "cut_fingerprint" + cut_suffix(k), &recorded) && fingerprint(cuts[k]) != recorded)
+      throw Error(names[k] + ": not cut " + std::to_string(k) + " of " + vtu + " (cut " + to_string(fingerprint(cuts[k])) +
+                  ", classified with " + to_string(recorded) + ")");
+  }
+  const DataArray& blocks = require_array(m.field_data, "cut_dof_blocks", "field", 4, K, vtu, "xfem-enrich");
+  const DataArray& pblocks = require_array(m.field_data, "product_dof_blocks", "field", 4, static_cast<std::size_t>(-1), vtu, "xfem-enrich");
+  const DataArray& junctions = require_array(m.field_data, "cut_junctions", "field", 2, K, vtu, "xfem-classify");
+  long one = 0, branch = 0;
+  em.cuts.resize(K);
+  for (int k = 0; k < K; ++k) {
+    CutLayer& c = em.cuts[k];
+    c.side = ints(require_array(m.point_data, "side" + cut_suffix(k), "point", 1, V, vtu, "xfem-classify"));
+    c.cut_class = ints(require_array(m.cell_data, "cut_class" + cut_suffix(k), "cell", 1, T, vtu, "xfem-classify"));
+    for (std::size_t v = 0; v < V; ++v)
+      if (c.side[v] != 1 && c.side[v] != -1)
+        throw Error(vtu + ": point array 'side" + cut_suffix(k) + "': point " + std::to_string(v) + " is not +1 or -1");
+    for (std::size_t t = 0; t < T; ++t)
+      if (c.cut_class[t] < 0 || c.cut_class[t] > 2)
+        throw Error(vtu + ": cell array 'cut_class" + cut_suffix(k) + "': tet " + std::to_string(t) + " is not 0, 1 or 2");
+    TetMesh view;
+    view.field_data["front_segments"] = require_array(m.field_data, "front_segments" + cut_suffix(k), "field", 6, static_cast<std::size_t>(-1), vtu, "xfem-classify");
+    view.field_data["front_normals"] = require_array(m.field_data, "front_normals" + cut_suffix(k), "field", 3, static_cast<std::size_t>(-1), vtu, "xfem-classify");
+    c.front = read_front(view, vtu);
+    c.sign_first = static_cast<long>(blocks(k, 0));
+    c.ns = static_cast<long>(blocks(k, 1));
+    c.branch_first = static_cast<long>(blocks(k, 2));
+    c.nb = static_cast<long>(blocks(k, 3));
+    c.ends_on = static_cast<int>(junctions(k, 0));
+    c.ends_side = static_cast<int>(junctions(k, 1));
+    if (c.ends_on >= K || c.ends_on == k || (c.ends_on >= 0 && c.ends_side != 1 && c.ends_side != -1))
+      throw Error(vtu + ": field array 'cut_junctions': cut " + std::to_string(k) + " has a bad junction");
+    if (c.nb > 0 && c.front.empty())
+      throw Error(vtu + ": cut " + std::to_string(k) + " has " + std::to_string(c.nb) + " branch nodes but no front");
+    one += c.ns;
+    branch += c.nb;
+    c.cut = std::make_shared<const CutSurface>(std::move(cuts[k]));
+  }
+  for (std::size_t p = 0; p < pblocks.tuples(); ++p) {
+    ProductBlock b{static_cast<int>(pblocks(p, 0)), static_cast<int>(pblocks(p, 1)), static_cast<long>(pblocks(p, 2)),
+                   static_cast<long>(pblocks(p, 3))};
+    if (b.a < 0 || b.b <= b.a || b.b >= K) throw Error(vtu + ": field array 'product_dof_blocks': bad pair");
+    one += b.count;
+    em.products.push_back(b);
+  }
+  if (one != em.ns || branch != em.nb)
+    throw Error(vtu + ": field arrays 'cut_dof_blocks'/'product_dof_blocks' do not add up to 'dof_counts'");
+  em.cut = em.cuts[0].cut;
+  em.front = em.cuts[0].front;
+  return em;
+}
+
+// The cut whose branch block holds `dof` (a branch DOF), or -1.
+int branch_cut_of_dof(const EnrichedMesh& em, long dof) {
+  for (std::size_t k = 0; k < em.cuts.size(); ++k)
+    if (dof >= em.cuts[k].branch_first && dof < em.cuts[k].branch_first + 4 * em.cuts[k].nb) return static_cast<int>(k);
+  return -1;
+}
+
+int branch_cut_of_tet(const EnrichedMesh& em, int t) {
+  for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) {
+    const long dof = em.dofs[e];
+    if (dof < em.np + em.ns) continue;
+    if (em.cuts.empty()) return 0;
+    const int k = branch_cut_of_dof(em, dof);
+    if (k >= 0) return k;
+  }
+  return -1;
+}
+
+const CrackFront& front_of_tet(const EnrichedMesh& em, int t) {
+  if (em.cuts.empty()) return em.front;
+  const int k = branch_cut_of_tet(em, t);
+  return k < 0 ? em.front : em.cuts[k].front;
+}
+
+const CutSurface* cut_of_tet(const EnrichedMesh& em, int t) {
+  if (em.cuts.empty()) return em.cut.get();
+  const int k = branch_cut_of_tet(em, t);
+  return k < 0 ? em.cut.get() : em.cuts[k].cut.get();
 }
 
 }  // namespace xfem

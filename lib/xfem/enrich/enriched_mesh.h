@@ -10,7 +10,7 @@
 
 namespace xfem {
 
-/// One cut of a mesh with several cuts (several_cuts.h; docs/FORMATS.md "Several cuts").
+/// One cut of a mesh with several cuts (classification_several_cuts.h; docs/FORMATS.md "Several cuts").
 struct CutLayer {
   std::vector<int> side;        ///< per point: H_k(P_m) (`side`, `side_k`)
   std::vector<int> cut_class;   ///< per tet (`cut_class`, `cut_class_k`)
@@ -64,5 +64,21 @@ struct EnrichedMesh {
 /// "enriched.vtu: field array 'dof_counts' missing (is this xfem-enrich output?)".
 EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_path,
                                 std::vector<std::string>* warnings = nullptr);
+
+/// Reads enriched.vtu and its cuts (one file each, or cut_id files: read_cuts): for a mesh with one
+/// cut exactly read_enriched_mesh; with several, also em.cuts and em.products (em.cut, em.front are
+/// cut 0's). Checks that the cuts are those the mesh was classified with (fingerprints).
+EnrichedMesh read_enriched_mesh_cuts(const std::string& vtu, const std::vector<std::string>& cut_paths,
+                                     std::vector<std::string>* warnings = nullptr);
+
+
+/// The cut whose branch block holds `dof` (a branch DOF of a mesh with several cuts), or -1.
+int branch_cut_of_dof(const EnrichedMesh& em, long dof);
+/// The cut whose branch DOFs tet t holds (at most one, classify_cuts makes sure), or -1. For one
+/// cut: 0 when the tet holds branch DOFs.
+int branch_cut_of_tet(const EnrichedMesh& em, int t);
+/// Its front and cut (em.front, em.cut for one cut or a tet without branch DOFs).
+const CrackFront& front_of_tet(const EnrichedMesh& em, int t);
+const CutSurface* cut_of_tet(const EnrichedMesh& em, int t);
 
 }  // namespace xfem

@@ -112,7 +112,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       if (side == 0 && em.cut && em.cuts.empty()) side = em.cut->side(tp.rule.x[k]);  // several cuts: 0 = decide by all
       tp.rule.side[k] = side;
       tp.grad_u.push_back(grad_u(t, tp.rule.x[k], side));
-      // Several cuts: that side is a side code (several_cuts.h); the auxiliary fields want the
+      // Several cuts: that side is a side code (side_codes.h); the auxiliary fields want the
       // point's side of em.cut, the cut whose front is evaluated.
       if (!em.cuts.empty()) tp.rule.side[k] = em.cut ? em.cut->side(tp.rule.x[k]) : 0;
       tp.sigma.push_back(stress(tp.grad_u.back(), lm));

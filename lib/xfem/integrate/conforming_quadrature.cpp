@@ -7,9 +7,7 @@
 #include <string>
 
 #include "xfem/integrate/consistent_gradients.h"
-#include "xfem/geometry/cut_pieces.h"
 #include "xfem/enrich/enriched_basis.h"
-#include "xfem/enrich/several_cuts.h"
 #include "xfem/core/error.h"
 #include "xfem/geometry/tet_shape.h"
 
@@ -185,37 +183,6 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out) {
   append_tet_rule(p, front, n, side, out, 0);
-}
-
-namespace {
-
-}  // namespace
-
-CutElementSplits split_cut_elements(const EnrichedMesh& em) {
-  if (!em.cuts.empty()) return split_cut_elements_several(em);
-  CutElementSplits out;
-  const int tets = em.tets();
-  out.index.assign(tets, -1);
-  out.first.push_back(0);
-  bool any = false;
-  if (!em.cut_class.empty())
-    for (int t = 0; t < tets && !any; ++t) any = em.cut_class[t] > 0;
-  if (!any) return out;
-  if (!em.cut) throw Error("conforming integration: the mesh has cut elements but no cut surface was given");
-  const std::vector<FrontSegment>& front = em.front.segments();
-  for (int t = 0; t < tets; ++t) {
-    if (em.cut_class[t] == 0) continue;
-    out.index[t] = static_cast<int>(out.first.size()) - 1;
-    TetCorners p;
-    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    const std::vector<int> meeting = em.cut->triangles_meeting(p);
-    const CutPieces pieces = em.cut_class[t] == 2 ? split_by_cut(p, *em.cut, meeting)
-                                                  : split_at_front(p, *em.cut, meeting, front);
-    out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
-    out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
-    out.first.push_back(static_cast<int>(out.tets.size()));
-  }
-  return out;
 }
 
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out) {

@@ -6,6 +6,7 @@
 
 #include "xfem/geometry/crack_front.h"
 #include "xfem/geometry/cut_surface.h"
+#include "xfem/integrate/cut_element_splits.h"
 #include "xfem/integrate/element_stiffness.h"
 #include "xfem/enrich/enriched_mesh.h"
 
@@ -75,19 +76,6 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 /// final tet with `side`.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out);
-
-/// The cut elements of a mesh split along the cut into pieces of one side each, once for all
-/// elements, by cut_pieces.h: completely cut elements (cut_class 2) by split_by_cut, partially cut
-/// ones (cut_class 1) by split_at_front (also at the planes through the front segments, so that
-/// the front is made of the pieces' edges). Exact for a piecewise planar cut, however thin a piece.
-struct CutElementSplits {
-  std::vector<std::array<Eigen::Vector3d, 4>> tets;  ///< corners (m) of every piece
-  std::vector<int> side;   ///< per piece: +1 / -1 (ahead of the front: its half of the cut's plane)
-  std::vector<int> index;  ///< per mesh tet: its row in `first`, -1 for uncut tets
-  std::vector<int> first;  ///< CSR: pieces first[i] .. first[i+1]-1
-};
-/// Throws xfem::Error when em has cut elements but no cut surface.
-CutElementSplits split_cut_elements(const EnrichedMesh& em);
 
 /// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side), or the
 /// tet itself for an uncut one (side 0), each by append_tet_rule with order n.

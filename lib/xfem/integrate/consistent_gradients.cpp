@@ -10,7 +10,6 @@
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/geometry/cut_pieces.h"
 #include "xfem/core/mesh.h"
-#include "xfem/enrich/several_cuts.h"
 #include "xfem/geometry/tet_shape.h"
 
 namespace xfem {
@@ -259,7 +258,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     if (em.dofs[begin + k] >= em.np + em.ns)
       entries.push_back({k, em.local[begin + k], static_cast<int>((em.dofs[begin + k] - em.np - em.ns) % 4)});
   if (entries.empty()) return out;
-  // With several cuts: the cut whose branch DOFs the tet holds (several_cuts.h).
+  // With several cuts: the cut whose branch DOFs the tet holds (enriched_mesh.h).
   const CutSurface* const cut = cut_of_tet(em, t);
   const CrackFront& front = front_of_tet(em, t);
 

@@ -10,7 +10,6 @@
 #include "xfem/enrich/branch_functions.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/consistent_gradients.h"
-#include "xfem/enrich/several_cuts.h"
 #include "xfem/core/error.h"
 #include "xfem/core/parallel_for.h"
 #include "xfem/system/pieces.h"
@@ -392,7 +391,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   std::vector<char> node_constrained(em.mesh.points.rows(), 0);
   for (long dof : sys.fixed)  // enriched DOFs (exact conditions) do not hold a piece in place
     if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
-  sys.pieces = em.cuts.empty() ? find_pieces(em, node_constrained) : find_pieces_several(em, node_constrained);
+  sys.pieces = find_pieces(em, node_constrained);
   sys.coordinates = em.mesh.points;
   s.load_seconds += seconds_since(clock);
   return sys;

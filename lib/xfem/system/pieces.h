@@ -21,6 +21,11 @@ namespace xfem {
 /// node's own side of each completely cut tet around it (its original DOF does not hold the
 /// other side, where its sign DOF adds an independent motion), any other tet around it.
 ///
+/// Several cuts (m.cuts) are a graph of their own: a cut tet is one part per region (the values
+/// of every g_k, side_codes.h), a tet a front runs through one part touching every region, and
+/// neighbours connect parts of the same region that both have a face on the shared face. The one
+/// cut keeps its halves: the same pieces, found on the mesh's shared faces alone (no splitting).
+///
 /// @param mesh              mesh, `side` (+1/-1 per point) and `cut_class` (per tet) are read
 /// @param node_constrained  per mesh point: nonzero if any of its DOFs has a Dirichlet value
 /// @return the pieces, ordered by their lowest tet index (piece 0 holds tet 0); Piece::tets counts
