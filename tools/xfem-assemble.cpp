@@ -1,8 +1,5 @@
 // SPDX-License-Identifier: MIT
 // Global stiffness matrix and load vector of the cut body with its Dirichlet data (paper 3.4-3.6).
-#include <unistd.h>
-
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -15,6 +12,7 @@
 #include "xfem/system/linear_system.h"
 #include "xfem/system/problem.h"
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/system/integration_cost.h"
 #include "xfem/system/reactions.h"
 #include "xfem/core/version.h"
 
@@ -78,13 +76,7 @@ int main(int argc, char** argv) {
   bool allow_large = false;
   app.add_flag("--allow-large", allow_large, "run even when the integration points are estimated above 2e8");
   return xfem::cli::run(*tool, argc, argv, [&] {
-    {  // the system directory is created if missing: its nearest existing ancestor must be writable
-      std::filesystem::path dir = std::filesystem::absolute(output);
-      while (!std::filesystem::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) dir = dir.parent_path();
-      if (!std::filesystem::is_directory(dir))
-        throw xfem::Error(output + ": " + dir.string() + " is not a directory");
-      if (::access(dir.c_str(), W_OK) != 0) throw xfem::Error(output + ": directory " + dir.string() + " is not writable");
-    }
+    xfem::cli::check_output_directory(output);
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
@@ -99,26 +91,13 @@ int main(int argc, char** argv) {
                         " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
-    {  // cost guard: integration points of the tets with enriched DOFs
-      const double m = std::floor(std::cbrt(static_cast<double>(points))) + 1;  // m^3 > points
-      const double n3 = std::pow(problem.order, 3);
-      double estimate = 0;
-      long enriched_tets = 0;
-      for (int t = 0; t < em.tets(); ++t) {
-        if (em.size(t) == 4) continue;
-        ++enriched_tets;
-        const bool cut = em.cut_class[t] != 0;
-        // Conforming: a cut tet splits into about 24 sub-tets of n^3 points. Oversampling: m^3
-        // points, and refinement splits the ~m^2 sub-tets the cut crosses into 8, `refine` times.
-        estimate += conforming ? (cut ? 24 : 1) * n3 : m * m * m + (cut ? m * m * std::pow(8.0, refine) : 0.0);
-      }
-      if (estimate > 2e8 && !allow_large)
-        throw xfem::Error(input + ": about " + xfem::short_number(estimate) + " integration points in " +
-                          std::to_string(enriched_tets) + " enriched tets (limit 2e8: lower --points/--refine/--order, "
-                          "or give --allow-large)");
-      if (estimate > 1e7)
-        xfem::cli::info("about " + xfem::short_number(estimate) + " integration points: this takes minutes");
-    }
+    long enriched_tets = 0;  // cost guard: integration points of the tets with enriched DOFs
+    const double estimate = xfem::integration_points_estimate(em, problem, points, refine, &enriched_tets);
+    if (estimate > 2e8 && !allow_large)
+      throw xfem::Error(input + ": about " + xfem::short_number(estimate) + " integration points in " +
+                        std::to_string(enriched_tets) + " enriched tets (limit 2e8: lower --points/--refine/--order, "
+                        "or give --allow-large)");
+    if (estimate > 1e7) xfem::cli::info("about " + xfem::short_number(estimate) + " integration points: this takes minutes");
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
                       std::to_string(problem.neumann.size()) + " Neumann conditions, " +

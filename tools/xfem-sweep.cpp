@@ -2,7 +2,6 @@
 // Progressive cutting (issue 20): a blade's sweep as a time series, the uncut body factorized once
 // and each step solved on the enriched DOFs alone (DESIGN.md, "Cutting does not touch the
 // standard block").
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -11,32 +10,16 @@
 #include "xfem/core/background_queue.h"
 #include "xfem/core/blas_threads.h"
 #include "xfem/core/cli.h"
-#include "xfem/geometry/cut_surface.h"
-#include "xfem/generate/cut_sweep.h"
-#include "xfem/post/deformed_mesh.h"
-#include "xfem/geometry/element_split.h"
 #include "xfem/core/error.h"
 #include "xfem/core/fingerprint.h"
+#include "xfem/core/version.h"
+#include "xfem/generate/cut_sweep.h"
 #include "xfem/io/matrix_market.h"
 #include "xfem/io/paraview_collection.h"
-#include "xfem/system/problem.h"
-#include "xfem/progressive/progressive_cut.h"
-#include "xfem/io/snapshot.h"
-#include "xfem/core/version.h"
 #include "xfem/io/vtk_io.h"
-
-namespace {
-std::string g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-std::string numbered(const std::string& stem, int k, const std::string& ext) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%03d", k);
-  return stem + buf + ext;
-}
-}  // namespace
+#include "xfem/post/sweep_frame.h"
+#include "xfem/progressive/sweep_report.h"
+#include "xfem/progressive/sweep_steps.h"
 
 int main(int argc, char** argv) {
   // Each step's Schur update (threaded BLAS) is followed by this program's own threads: OpenBLAS's
@@ -97,6 +80,7 @@ int main(int argc, char** argv) {
   app.add_option("--ordering", ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   return xfem::cli::run(*tool, argc, argv, [&] {
+    using xfem::cli::three_digits;
     if (backend == "petsc")
       throw xfem::Error("--backend petsc: not available in xfem-sweep: a step reuses the uncut body's one Cholesky "
                         "factorization for thousands of solves, which an iterative solver would pay for in full each "
@@ -115,15 +99,13 @@ int main(int argc, char** argv) {
     const std::vector<double> t = xfem::step_times(times, steps);
     const xfem::Problem problem = xfem::read_problem(problem_path);
     std::filesystem::create_directories(dir);
+    const auto in_dir = [&](const std::string& name) { return (std::filesystem::path(dir) / name).string(); };
 
     double start = xfem::cli::now();
     const xfem::UncutBody body = xfem::factorize_uncut(mesh, problem, ordering == "amd" ? xfem::Ordering::Amd
                                                                                          : xfem::Ordering::Metis);
     const double setup = xfem::cli::now() - start;
-    xfem::cli::info("uncut body: " + std::to_string(body.free_dofs.size()) + " free DOFs, assembled in " +
-                    g(body.assemble_seconds) + " s, factorized once (CHOLMOD, " + body.factor->ordering + ", " +
-                    std::to_string(static_cast<long>(body.factor->factor_nonzeros)) + " non-zeros in L) in " +
-                    g(body.factor->analyze_seconds + body.factor->factor_seconds) + " s");
+    xfem::cli::info(xfem::describe_uncut_body(body));
     xfem::Json report;
     report["generator"] = std::string("xfem-sweep ") + xfem::version;
     report["body"] = body_path;
@@ -134,80 +116,33 @@ int main(int argc, char** argv) {
     report["fingerprints"] = xfem::provenance_json({{"body", body_fingerprint},
                                                     {"cut", xfem::fingerprint(sweep)},
                                                     {"problem", problem_fingerprint}});
-    report["factorization"] = {{"free_dofs", static_cast<long>(body.free_dofs.size())},
-                               {"ordering", body.factor->ordering},
-                               {"factor_nonzeros", static_cast<long>(body.factor->factor_nonzeros)},
-                               {"assemble_seconds", body.assemble_seconds},
-                               {"analyze_seconds", body.factor->analyze_seconds},
-                               {"factor_seconds", body.factor->factor_seconds},
-                               {"solve_seconds", body.solve_seconds},
-                               {"seconds", setup}};
+    report["factorization"] = xfem::factorization_json(body, setup);
+    xfem::SweepSteps sweep_steps(body, sweep, cut_path, times, t, solver);
     // Incremental: the body's response on the DOFs the whole sweep touches, once.
-    std::unique_ptr<xfem::ProgressiveCut> progressive;
-    double region_seconds = 0;
-    if (solver == "incremental") {
-      start = xfem::cli::now();
-      progressive = std::make_unique<xfem::ProgressiveCut>(body);
-      std::vector<std::shared_ptr<const xfem::CutSurface>> cuts;
-      for (double tk : t) cuts.push_back(std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, tk)));
-      progressive->prepare(cuts, xfem::cli::progress("the body's response on the sweep's region"));
-      region_seconds = xfem::cli::now() - start;
-      xfem::cli::info("the uncut body's response on the " + std::to_string(progressive->region_size()) +
-                      " free DOFs the sweep touches: " + g(region_seconds) + " s (once)");
-    }
-    report["factorization"]["region_dofs"] = progressive ? progressive->region_size() : 0L;
+    start = xfem::cli::now();
+    const long region = sweep_steps.prepare(xfem::cli::progress("the body's response on the sweep's region"));
+    const double region_seconds = sweep_steps.incremental() ? xfem::cli::now() - start : 0.0;
+    if (sweep_steps.incremental())
+      xfem::cli::info("the uncut body's response on the " + std::to_string(region) + " free DOFs the sweep touches: " +
+                      three_digits(region_seconds) + " s (once)");
+    report["factorization"]["region_dofs"] = region;
     report["factorization"]["region_seconds"] = region_seconds;
     report["steps"] = xfem::Json::array();
     std::vector<xfem::CollectionEntry> collection;
-    const auto solve_step = [&](int k) {
-      auto cut = std::make_shared<const xfem::CutSurface>(xfem::cut_until(sweep, times, t[k - 1]));
-      try {
-        // The original DOFs' last solve is left to the frame, built off the steps' path (below).
-        if (progressive) return progressive->step(cut, xfem::cut_until_ids(times, t[k - 1]), false);
-        return xfem::solve_cut(body, cut, {},
-                               solver == "schur"      ? xfem::CutSolver::Schur
-                               : solver == "refactor" ? xfem::CutSolver::Refactor
-                                                      : xfem::CutSolver::Auto);
-      } catch (const xfem::Error& e) {
-        std::string m = e.what();
-        if (m.rfind("cut: ", 0) == 0) m = m.substr(5);
-        throw xfem::Error(cut_path + ": step " + std::to_string(k) + " (t = " + g(t[k - 1]) + " s): " + m);
-      }
-    };
-    const auto make_frame = [&](const xfem::CutSolution& step) {
-      const xfem::EnrichedMesh& em = step.em;
-      const xfem::SplitMesh split = em.cut ? xfem::split_mesh(em.mesh, em.side, em.cut_class, *em.cut, em.front.segments())
-                                           : xfem::unsplit_mesh(em.mesh, em.side);
-      return xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, step.u), problem.E, problem.nu);
-    };
     // Pictures: the camera, framing and colour range of the last step (the largest cut), for all.
     xfem::SnapshotOptions picture;
     std::unique_ptr<xfem::CutSolution> last;
     double last_solved = 0;
     if (png) {
       start = xfem::cli::now();
-      last = std::make_unique<xfem::CutSolution>(solve_step(steps));
+      last = std::make_unique<xfem::CutSolution>(sweep_steps.solve(steps));
       xfem::complete_solution(body, *last);
       last_solved = xfem::cli::now() - start;
-      const xfem::DeformedBody frame = make_frame(*last);
+      const xfem::DeformedBody frame = xfem::sweep_frame(*last, problem);
       // The incremental solver's step K follows step K - 1 like every other step: solve it again there.
-      if (progressive) last.reset();
+      if (sweep_steps.incremental()) last.reset();
       report["factorization"]["picture_setup_seconds"] = xfem::cli::now() - start;
-      picture.view = xfem::cut_view(frame.wound);
-      picture.colour_max = xfem::colour_top(frame.volume);
-      const auto& u = frame.volume.point_data.at("displacement");
-      std::array<double, 6> box{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
-      for (Eigen::Index p = 0; p < frame.volume.points.rows(); ++p)
-        for (int i = 0; i < 3; ++i) {
-          const double x = frame.volume.points(p, i) + scale * u(static_cast<std::size_t>(p), i);
-          box[2 * i] = std::min(box[2 * i], x);
-          box[2 * i + 1] = std::max(box[2 * i + 1], x);
-        }
-      picture.frame = box;
-      picture.scale = scale;
-      picture.width = width;
-      picture.height = height;
-      picture.edges = xfem::SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
+      picture = xfem::sweep_pictures(frame, scale, width, height);
     }
     const xfem::Compression packing = xfem::compression_named(compression);
     // A step's frame is built and written in the background while the next steps are solved
@@ -220,88 +155,46 @@ int main(int argc, char** argv) {
       int k = 0;
       std::unique_ptr<xfem::CutSolution> step;
       xfem::DeformedBody frame;
-      double solved = 0, built = 0, written = 0;  // s
+      xfem::StepTimes times;
     };
     const auto write_frame = [&](int k, std::unique_ptr<xfem::CutSolution> step, double solved) {
       Framed out;
       const double begin = xfem::cli::now();
       const xfem::EnrichedMesh& em = step->em;
       xfem::complete_solution(body, *step);
-      out.frame = make_frame(*step);
-      out.built = xfem::cli::now() - begin;
-      xfem::write_tet_mesh(out.frame.volume, (std::filesystem::path(dir) / numbered("step_", k, ".vtu")).string(), packing);
-      xfem::write_triangle_mesh(out.frame.wound, (std::filesystem::path(dir) / numbered("step_", k, "_wound.vtp")).string(),
-                                packing);
-      out.written = xfem::cli::now() - begin;  // what xfem-visualize does
+      out.frame = xfem::sweep_frame(*step, problem);
+      out.times.built = xfem::cli::now() - begin;
+      xfem::write_tet_mesh(out.frame.volume, in_dir(xfem::numbered("step_", k, ".vtu")), packing);
+      xfem::write_triangle_mesh(out.frame.wound, in_dir(xfem::numbered("step_", k, "_wound.vtp")), packing);
+      out.times.written = xfem::cli::now() - begin;  // what xfem-visualize does
       if (solutions) {  // with the fingerprints xfem-solve writes, so xfem-visualize/-rmserror can check a frame's inputs
         xfem::Provenance made_for{{"enriched", body_fingerprint}, {"problem", problem_fingerprint}};
         if (em.cut) made_for["cut"] = xfem::fingerprint(em.cut->mesh());
-        xfem::write_vector(step->u, (std::filesystem::path(dir) / numbered("u_", k, ".mtx")).string(),
-                           xfem::provenance_comments(made_for));
+        xfem::write_vector(step->u, in_dir(xfem::numbered("u_", k, ".mtx")), xfem::provenance_comments(made_for));
       }
-      if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), (std::filesystem::path(dir) / numbered("cut_", k, ".vtp")).string());
+      if (cuts && em.cut) xfem::write_triangle_mesh(em.cut->mesh(), in_dir(xfem::numbered("cut_", k, ".vtp")));
       out.k = k;
       out.step = std::move(step);
-      out.solved = solved;
+      out.times.solved = solved;
       return out;
     };
     // A written frame, in the main thread: its picture, its entries in the collection, the progress
     // line and the report's row (its step_seconds filled in at the end).
     const auto finish = [&](const Framed& f) {
       const int k = f.k;
-      const xfem::CutSolution& step = *f.step;
-      const xfem::EnrichedMesh& em = step.em;
       const double picture_start = xfem::cli::now();
       if (png) {
-        picture.title = "t = " + g(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
-        xfem::write_snapshot(f.frame.volume, f.frame.wound,
-                             (std::filesystem::path(dir) / numbered("step_", k, ".png")).string(), picture);
+        picture.title = "t = " + three_digits(t[k - 1]) + " s (step " + std::to_string(k) + " of " + std::to_string(steps) + ")";
+        xfem::write_snapshot(f.frame.volume, f.frame.wound, in_dir(xfem::numbered("step_", k, ".png")), picture);
       }
-      const double pictured = png ? xfem::cli::now() - picture_start : 0.0;
-      collection.push_back({t[k - 1], 0, numbered("step_", k, ".vtu")});
-      collection.push_back({t[k - 1], 1, numbered("step_", k, "_wound.vtp")});
-      const long triangles = em.cut ? static_cast<long>(em.cut->mesh().triangles.rows()) : 0;
-      xfem::cli::info("step " + std::to_string(k) + "/" + std::to_string(steps) + ", t = " + g(t[k - 1]) + " s: " +
-                      std::to_string(triangles) + " cut triangles, " +
-                      std::to_string(step.counts.partial + step.counts.complete) + " cut tets, " +
-                      std::to_string(step.enriched_dofs) + " enriched DOFs; solved in " + g(f.solved) +
-                      " s (classify " + g(step.classify_seconds) + ", assemble " + g(step.assemble_seconds) +
-                      (progressive ? ", incremental Schur " : step.schur_used ? ", Schur " : ", refactorization ") +
-                      g(step.solve_seconds) + "), frame written in " + g(f.written) + " s" +
-                      (png ? ", picture in " + g(pictured) + " s" : ""));
-      report["steps"].push_back({{"step", k},
-                                 {"time", t[k - 1]},
-                                 {"cut_triangles", triangles},
-                                 {"partial", step.counts.partial},
-                                 {"complete", step.counts.complete},
-                                 {"sign", step.counts.sign},
-                                 {"branch", step.counts.branch},
-                                 {"n", em.n},
-                                 {"dofs", 3 * em.n},
-                                 {"enriched_dofs", step.enriched_dofs},
-                                 {"unsupported_dofs", step.unsupported_dofs},
-                                 {"enriched_tets", step.enriched_tets},
-                                 {"classify_seconds", step.classify_seconds},
-                                 {"assemble_seconds", step.assemble_seconds},
-                                 {"solver", progressive ? "incremental" : step.schur_used ? "schur" : "refactor"},
-                                 {"recomputed_tets", step.recomputed_tets},
-                                 {"keys_seconds", step.keys_seconds},
-                                 {"elements_seconds", step.elements_seconds},
-                                 {"kept_dofs", step.incremental.kept},
-                                 {"added_dofs", step.incremental.added},
-                                 {"refactored_rows", step.incremental.refactored},
-                                 {"region_added", step.incremental.region_added},
-                                 {"schur_seconds", step.schur.schur_seconds},
-                                 {"dense_seconds", step.schur.dense_seconds},
-                                 {"solve_seconds", step.solve_seconds},
-                                 {"seconds", f.solved},
-                                 {"frame_seconds", f.written},
-                                 {"frame_build_seconds", f.built},
-                                 {"schur_columns_seconds", step.incremental.columns_seconds},
-                                 {"schur_factor_seconds", step.incremental.factor_seconds},
-                                 {"picture_seconds", pictured}});
-      if (step.unsupported_dofs > 0)
-        xfem::cli::detail(std::to_string(step.unsupported_dofs) + " enriched DOFs without support fixed to 0");
+      xfem::StepTimes times = f.times;
+      times.pictured = png ? xfem::cli::now() - picture_start : 0.0;
+      collection.push_back({t[k - 1], 0, xfem::numbered("step_", k, ".vtu")});
+      collection.push_back({t[k - 1], 1, xfem::numbered("step_", k, "_wound.vtp")});
+      xfem::cli::info(xfem::describe_step(*f.step, k, steps, t[k - 1], sweep_steps.incremental(), times, png));
+      report["steps"].push_back(xfem::step_json(*f.step, k, t[k - 1], sweep_steps.incremental(), times));
+      if (f.step->unsupported_dofs > 0)
+        xfem::cli::detail(std::to_string(f.step->unsupported_dofs) + " enriched DOFs without support fixed to 0");
     };
     // Step k's wall time: from the start of its solution to the start of the next one's (for the
     // last, to every frame written), its share of the sweep's whole time.
@@ -319,7 +212,7 @@ int main(int argc, char** argv) {
     for (int k = 1; k <= steps; ++k) {
       start = xfem::cli::now();
       const bool solved_first = k == steps && last;  // for the pictures' camera, above
-      auto step = solved_first ? std::move(last) : std::make_unique<xfem::CutSolution>(solve_step(k));
+      auto step = solved_first ? std::move(last) : std::make_unique<xfem::CutSolution>(sweep_steps.solve(k));
       const double solved = solved_first ? last_solved : xfem::cli::now() - start;
       auto task = std::make_shared<std::unique_ptr<xfem::CutSolution>>(std::move(step));
       frames.push([&write_frame, k, task, solved] { return write_frame(k, std::move(*task), solved); });
@@ -330,7 +223,7 @@ int main(int argc, char** argv) {
       wall[k - 1] = xfem::cli::now() - start;
     }
     for (int k = 1; k <= steps; ++k) report["steps"][k - 1]["step_seconds"] = wall[k - 1];
-    xfem::write_paraview_collection(collection, (std::filesystem::path(dir) / "sweep.pvd").string());
+    xfem::write_paraview_collection(collection, in_dir("sweep.pvd"));
     if (!report_path.empty()) xfem::write_json(report, report_path);
   });
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -162,6 +163,14 @@ void check_output(const std::string& path, const std::vector<std::string>& exten
   if (::access(dir.c_str(), W_OK) != 0) throw Error(path + ": directory " + dir.string() + " is not writable");
 }
 
+void check_output_directory(const std::string& path) {
+  // The directory is created if missing: its nearest existing ancestor must be writable.
+  std::filesystem::path dir = std::filesystem::absolute(path);
+  while (!std::filesystem::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) dir = dir.parent_path();
+  if (!std::filesystem::is_directory(dir)) throw Error(path + ": " + dir.string() + " is not a directory");
+  if (::access(dir.c_str(), W_OK) != 0) throw Error(path + ": directory " + dir.string() + " is not writable");
+}
+
 std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
   std::string best;
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
@@ -273,6 +282,12 @@ std::function<void(double)> progress(const std::string& what) {
     *last = step;
     std::cerr << prefix() << what << " " << step * 10 << "%\n";
   };
+}
+
+std::string three_digits(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
 }
 
 double now() {

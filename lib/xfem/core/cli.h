@@ -52,9 +52,16 @@ CLI::Validator non_negative();
 /// when `stdout_ok`. Throws xfem::Error "<path>: ..." naming the problem.
 void check_output(const std::string& path, const std::vector<std::string>& extensions, bool stdout_ok = false);
 
+/// Checks an output directory before any work: the directory `path` (created later if missing)
+/// has a nearest existing ancestor that is a writable directory. Throws xfem::Error "<path>: ...".
+void check_output_directory(const std::string& path);
+
 /// The suggestion for a mistyped `word` among `candidates` (closest by edit distance, at most
 /// about a third of its letters off), or "" when none is close.
 std::string closest(const std::string& word, const std::vector<std::string>& candidates);
+
+/// `v` with three significant digits ("%.3g"): timings, residuals and times in messages.
+std::string three_digits(double v);
 
 /// Wall-clock seconds since `start` (from `now()`), for the timings tools report.
 double now();

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/solve/backend_launch.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "xfem/core/cli.h"
+#include "xfem/core/error.h"
+#include "xfem/core/version.h"
+#include "xfem/io/petsc_binary.h"
+#include "xfem/solve/petsc_solver.h"
+#include "xfem/system/linear_system.h"
+
+namespace xfem {
+
+bool under_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+std::string petsc_program(const char* argv0, bool links_petsc) {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path me = ec ? std::filesystem::path(argv0) : self;
+  if (links_petsc) return me.string();
+  const auto helper = me.parent_path() / "xfem-solve-petsc";
+  if (!have_petsc || !std::filesystem::exists(helper))
+    throw Error("the PETSc backend needs " + helper.string() + (have_petsc ? ", which is missing" :
+                ": this build has no PETSc (CMake did not find it)") +
+                ": use --backend cholmod, or install libpetsc-real-dev and rebuild");
+  return helper.string();
+}
+
+void exec_with_arguments(const std::string& program, int processes, int argc, char** argv) {
+  std::vector<std::string> args;
+  if (processes > 1) {
+    // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
+    args = {"mpirun", "--quiet", "-np", std::to_string(processes), "--oversubscribe", "--bind-to", "none"};
+    // Waiting ranks yield the core instead of busy-polling (unless the user chose otherwise): on
+    // a machine whose cores other jobs share, polling ranks took 1.7x the wall time (256k
+    // reference, 2 ranks, load 9: 25.8 and 36.3 s polling against 14.1 and 22.3 s yielding).
+    ::setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
+    if (::geteuid() == 0) {  // Open MPI refuses root unless told twice
+      args.push_back("--allow-run-as-root");
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    }
+  }
+  args.push_back(program);
+  for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
+  std::vector<char*> cargs;
+  for (auto& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  ::setenv("XFEM_OPTIONS_SHOWN", "1", 1);  // -v: this process has printed them (cli.cpp)
+  std::fflush(stderr);
+  if (processes > 1)
+    ::execvp("mpirun", cargs.data());
+  else
+    ::execv(program.c_str(), cargs.data());
+}
+
+std::string launch_backend(const std::string& dir, std::string backend, int processes, bool links_petsc, int argc,
+                           char** argv) {
+  const bool mpi_child = under_mpirun();
+  if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
+    // The choice from the system without K (cheap), the same in every rank of a restart.
+    const LinearSystem head = read_linear_system(dir, false);
+    const long dofs = 3 * head.n;
+    if (backend == "auto") backend = processes > 1 ? "petsc" : automatic_backend(dofs, head.n > head.np);
+    if (backend == "petsc" && !mpi_child) {
+      const int wanted = processes > 0 ? processes
+                                       : automatic_processes(dofs, static_cast<int>(std::thread::hardware_concurrency()));
+      if (wanted > 1) {
+        const std::string program = petsc_program(argv[0], links_petsc);
+        // The checks a rank would fail on, here once: one error line instead of one per rank.
+        const std::string k_path = system_matrix_file(dir, system_format(dir));
+        if (system_format(dir) == SystemFormat::Petsc) {
+          const PetscMatrixHeader h = read_petsc_matrix_header(k_path);
+          if (h.rows != dofs || h.cols != dofs)
+            throw Error(k_path + ": " + std::to_string(h.rows) + " x " + std::to_string(h.cols) +
+                        ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs));
+        }
+        cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
+        exec_with_arguments(program, wanted, argc, argv);
+        cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
+      }
+    }
+  }
+  // One process (or one rank of a user's mpirun): the PETSc program takes over with the same
+  // arguments; it decides again from the same files, so it comes to the same choice.
+  if (!links_petsc && backend == "petsc") {
+    exec_with_arguments(petsc_program(argv[0], links_petsc), 1, argc, argv);
+    throw Error("cannot start " + petsc_program(argv[0], links_petsc) + ": " + std::strerror(errno));
+  }
+  return backend;
+}
+
+}  // namespace xfem

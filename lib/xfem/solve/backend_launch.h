@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <string>
+
+namespace xfem {
+
+/// True in a process that mpirun started (Open MPI, MPICH's PMI or PMIx set these variables).
+bool under_mpirun();
+
+/// PETSc and Open MPI take ~40 ms to load on a quiet machine (more than a small CHOLMOD solve), so
+/// xfem-solve does not link them: the PETSc backend is the same program built with PETSc,
+/// xfem-solve-petsc, next to it. The path of that program, or of this one when `links_petsc`
+/// (this program is it; `argv0`: its argv[0], used when /proc/self/exe cannot be read). Throws
+/// xfem::Error when the PETSc program is missing or this build has no PETSc.
+std::string petsc_program(const char* argv0, bool links_petsc);
+
+/// Replaces this process by `program` with this process's arguments, optionally under
+/// `mpirun -np P` (the ranks see the MPI environment and do not restart again). Returns only if
+/// the program cannot be started.
+void exec_with_arguments(const std::string& program, int processes, int argc, char** argv);
+
+/// xfem-solve's backend for the system directory `dir`: `backend` ("auto", "cholmod" or "petsc")
+/// decided from the system's size when "auto" (without reading K: the same choice in every rank
+/// of a restart), and `processes` (0: automatic) for PETSc. When PETSc wants more than one
+/// process and this process is not under mpirun, restarts the PETSc program under mpirun with the
+/// same arguments (falling back to one process, with a warning, when mpirun cannot be started);
+/// when this program does not link PETSc (`links_petsc` false) and the backend is PETSc, the
+/// PETSc program takes over with the same arguments (it decides again from the same files, so it
+/// comes to the same choice). Returns the backend this process runs: "cholmod", or "petsc" when
+/// it links PETSc.
+std::string launch_backend(const std::string& dir, std::string backend, int processes, bool links_petsc, int argc,
+                           char** argv);
+
+}  // namespace xfem
