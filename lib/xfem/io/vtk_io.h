@@ -5,6 +5,12 @@
 
 #include "xfem/core/mesh.h"
 
+// Tetrahedral meshes and cut surfaces in VTK's formats and the common surface ones. Where each is:
+//   tet_mesh_read.cpp    .vtu, legacy .vtk, standard input   tet_mesh_write.cpp  .vtu
+//   surface_read.cpp     .vtp, .vtu, .vtk, .stl, .obj, .off  surface_write.cpp   .vtp, .vtu
+//   tet_mesh_validate.cpp, surface_validate.cpp   the checks (and repairs) after reading
+//   vtk_io_detail.h      what they share; vtk_legacy_check.cpp and vtk_xml_check.h check files
+//                        before VTK parses them; gmsh .msh: gmsh_io.h
 namespace xfem {
 
 /// Reads a tetrahedral volume mesh from VTK XML `.vtu` or legacy `.vtk` (ASCII or binary) with all
