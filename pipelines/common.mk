@@ -34,8 +34,11 @@ XVFB ?= $(if $(DISPLAY),,xvfb-run -a)
 #     	$(call xfem_front,P) --radius 0.01 -o out/front.vtp --csv out/front.csv
 #     xfem_solution is run P's enriched mesh, cuts, solution and problem file; xfem_front the
 #     xfem-front command on them; xfem_cut_options the run's --cut options, for other tools.
+#   XFEM_SOLVE is the solve command; a run solved otherwise sets it on its solution, e.g. PETSc
+#   under MPI: out/fine/u.mtx: XFEM_SOLVE = $(MPIRUN) $(BIN)/xfem-solve $(QUIET) --backend petsc
 # The call's arguments are expanded when it is made: set the variables they use (RULE, ...) before
 # it. A comma ends an argument: keep text with commas (a title) in a variable, --title "$(TITLE)".
+XFEM_SOLVE = $(BIN)/xfem-solve $(QUIET)
 xfem_cut_options = $(addprefix --cut ,$(xfem_cuts.$(1)))
 xfem_solution = $(1)enriched.vtu $(xfem_cuts.$(1)) $(1)u.mtx $(xfem_problem.$(1))
 xfem_front = $(BIN)/xfem-front $(QUIET) $(1)enriched.vtu $(call xfem_cut_options,$(1)) --solution $(1)u.mtx \
@@ -52,7 +55,7 @@ $(1)enriched.vtu: $(1)classified.vtu
 $(1)system/system.json: $(1)enriched.vtu $(3) $(4)
 	$$(BIN)/xfem-assemble $$(QUIET) $$< $(addprefix --cut ,$(3)) --problem $(4) $(5) -o $(1)system
 $(1)u.mtx $(if $(filter reactions,$(6)),$(1)reactions.mtx) &: $(1)system/system.json
-	$$(BIN)/xfem-solve $$(QUIET) $(1)system -o $(1)u.mtx$(if $(filter reactions,$(6)), --reactions $(1)reactions.mtx)$(if $(filter report,$(6)), --report $(1)solve.json)
+	$$(XFEM_SOLVE) $(1)system -o $(1)u.mtx$(if $(filter reactions,$(6)), --reactions $(1)reactions.mtx)$(if $(filter report,$(6)), --report $(1)solve.json)
 endef
 
 define xfem_visualize
