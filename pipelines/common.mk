@@ -54,7 +54,7 @@ $(1)enriched.vtu: $(1)classified.vtu
 	$$(BIN)/xfem-enrich $$(QUIET) $$< -o $$@
 $(1)system/system.json: $(1)enriched.vtu $(3) $(4)
 	$$(BIN)/xfem-assemble $$(QUIET) $$< $(addprefix --cut ,$(3)) --problem $(4) $(5) -o $(1)system
-$(1)u.mtx $(if $(filter reactions,$(6)),$(1)reactions.mtx) &: $(1)system/system.json
+$(1)u.mtx $(if $(filter reactions,$(6)),$(1)reactions.mtx &:,:) $(1)system/system.json
 	$$(XFEM_SOLVE) $(1)system -o $(1)u.mtx$(if $(filter reactions,$(6)), --reactions $(1)reactions.mtx)$(if $(filter report,$(6)), --report $(1)solve.json)
 endef
 
