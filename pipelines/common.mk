@@ -11,7 +11,12 @@ XVFB ?= $(if $(DISPLAY),,xvfb-run -a)
 # The chain of tools every pipeline runs, written once:
 #   mesh + cuts -> xfem-classify -> xfem-enrich -> xfem-assemble -> xfem-solve -> xfem-visualize, xfem-front
 # A pipeline writes the rules of its own inputs (the mesh and the cuts: xfem-mesh, gmsh) and `all`,
-# then states each run in a line. The files of a run share a prefix P: "out/" names out/classified.vtu,
+# then states each run in a line (pipelines/organ/Makefile is the smallest example):
+#   out/organ.vtu: | out                  (and out/cut.vtp, out: their rules)
+#   	$(BIN)/xfem-mesh $(QUIET) organ --size $(SIZE) -o $@
+#   $(eval $(call xfem_chain,out/,out/organ.vtu,out/cut.vtp,problem.json,$(RULE),reactions report))
+#   $(eval $(call xfem_visualize,out/,out/deformed.vtu out/wound.vtp out/organ.png,--title "$(TITLE)"))
+# The files of a run share a prefix P: "out/" names out/classified.vtu,
 # out/enriched.vtu, out/system/, out/u.mtx; "out/fine/" a second run in out/fine/; "out/box-" names
 # out/box-classified.vtu, ..., out/box-system/, out/box-u.mtx.
 #
@@ -38,12 +43,16 @@ XVFB ?= $(if $(DISPLAY),,xvfb-run -a)
 #   under MPI: out/fine/u.mtx: XFEM_SOLVE = $(MPIRUN) $(BIN)/xfem-solve $(QUIET) --backend petsc
 # The call's arguments are expanded when it is made: set the variables they use (RULE, ...) before
 # it. A comma ends an argument: keep text with commas (a title) in a variable, --title "$(TITLE)".
+# Not on the chain: convergence/runs.mk (pattern rules over run directories named after their
+# mesh, shared by both convergence studies), convergence-wellposed's reference levels and
+# verification (pattern rules choosing options from the run's path), sweep (xfem-sweep does it all).
 XFEM_SOLVE = $(BIN)/xfem-solve $(QUIET)
 xfem_cut_options = $(addprefix --cut ,$(xfem_cuts.$(1)))
 xfem_solution = $(1)enriched.vtu $(xfem_cuts.$(1)) $(1)u.mtx $(xfem_problem.$(1))
 xfem_front = $(BIN)/xfem-front $(QUIET) $(1)enriched.vtu $(call xfem_cut_options,$(1)) --solution $(1)u.mtx \
   --problem $(xfem_problem.$(1))
 
+# With reactions, u.mtx and reactions.mtx come from one xfem-solve: a grouped target (&:).
 define xfem_chain
 xfem_cuts.$(1) := $(3)
 xfem_problem.$(1) := $(4)
