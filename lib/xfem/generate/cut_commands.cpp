@@ -26,11 +26,48 @@ void write_cut(const TriangleMesh& m, const std::string& out) {
             out);
 }
 
+// The options of each command, bound to its CLI11 options.
 struct RectOptions {
   MeshCommandOutput out;
   V3 corner{0, 0, 0}, edge1{0, 0, 0}, edge2{0, 0, 0};
   std::vector<int> divisions{1};
   bool beam = false;
+};
+
+struct SineOptions {
+  MeshCommandOutput out;
+  std::array<double, 2> lo{-0.1, -0.07}, hi{0.1, 0.01};
+  double z0 = 0.005, amplitude = 0.01, wavelength = 0.1;
+  std::vector<int> divisions{1};
+};
+
+struct DiscOptions {
+  MeshCommandOutput out;
+  V3 center{0, 0, 0}, normal{0, 0, 1};
+  double radius = 0.03;
+  int rings = 8;
+};
+
+struct ZigzagOptions {
+  MeshCommandOutput out;
+  double z0 = 0.1, amplitude = 0.02;
+  std::array<double, 2> lo{-0.01, -0.01}, hi{0.04, 0.07};
+  int folds = 3;
+  std::vector<int> divisions{1};
+};
+
+struct MergeOptions {
+  MeshCommandOutput out;
+  std::vector<std::string> inputs;
+  bool cut_id = false;
+};
+
+struct SweepOptions {
+  MeshCommandOutput out;
+  std::vector<double> path;
+  V3 arc_centre{0, 0, 0}, arc_axis{0, 0, 1}, down{0, 0, -1};
+  std::array<double, 2> arc_angles{0, 0};
+  double arc_radius = 0, depth = 0, tilt = 0, resolution = 0, duration = 1;
 };
 
 MeshCommand rect_command(CLI::App& app) {
@@ -63,13 +100,6 @@ MeshCommand rect_command(CLI::App& app) {
           }};
 }
 
-struct SineOptions {
-  MeshCommandOutput out;
-  std::array<double, 2> lo{-0.1, -0.07}, hi{0.1, 0.01};
-  double z0 = 0.005, amplitude = 0.01, wavelength = 0.1;
-  std::vector<int> divisions{1};
-};
-
 MeshCommand sine_command(CLI::App& app) {
   auto o = std::make_shared<SineOptions>();
   auto* sine = add_mesh_command(app, "cut-sine", "sinusoidal sheet z = z0 + A sin(2 pi x / L) over a rectangle, normal "
@@ -94,13 +124,6 @@ MeshCommand sine_command(CLI::App& app) {
           }};
 }
 
-struct DiscOptions {
-  MeshCommandOutput out;
-  V3 center{0, 0, 0}, normal{0, 0, 1};
-  double radius = 0.03;
-  int rings = 8;
-};
-
 MeshCommand disc_command(CLI::App& app) {
   auto o = std::make_shared<DiscOptions>();
   auto* disc = add_mesh_command(app, "cut-disc", "flat disc: a cut whose front lies inside the body all round",
@@ -117,22 +140,12 @@ MeshCommand disc_command(CLI::App& app) {
           }};
 }
 
-struct ZigzagOptions {
-  MeshCommandOutput out;
-  double z0 = 0.1, amplitude = 0.02;
-  std::array<double, 2> lo{-0.01, -0.01}, hi{0.04, 0.07};
-  int folds = 3;
-  std::vector<int> divisions{1};
-};
-
 MeshCommand zigzag_command(CLI::App& app) {
   auto o = std::make_shared<ZigzagOptions>();
-  auto* zigzag = add_mesh_command(app, "cut-zigzag", "folded sheet: piecewise planar zig-zag z = f(x), fold lines along "
-                                                     "y, normal +z; the defaults cut the paper's beam through, outside it "
-                                                     "on all sides",
-                                  "cut-zigzag --folds 3 --amplitude 0.02 --z0 0.1 --lo -0.01 -0.01 --hi 0.04 0.07 -o "
-                                  "zigzag.vtp",
-                                  o->out);
+  auto* zigzag = add_mesh_command(
+      app, "cut-zigzag", "folded sheet: piecewise planar zig-zag z = f(x), fold lines along y, normal +z; the defaults "
+                         "cut the paper's beam through, outside it on all sides",
+      "cut-zigzag --folds 3 --amplitude 0.02 --z0 0.1 --lo -0.01 -0.01 --hi 0.04 0.07 -o zigzag.vtp", o->out);
   zigzag->add_option("--lo", o->lo, "x, y of the rectangle's low corner, m (default -0.01 -0.01)");
   zigzag->add_option("--hi", o->hi, "x, y of the rectangle's high corner, m (default 0.04 0.07)");
   zigzag->add_option("--z0", o->z0, "mean height z0, m (default 0.1)");
@@ -147,12 +160,6 @@ MeshCommand zigzag_command(CLI::App& app) {
                       o->out.path);
           }};
 }
-
-struct MergeOptions {
-  MeshCommandOutput out;
-  std::vector<std::string> inputs;
-  bool cut_id = false;
-};
 
 void merge_cuts(const MergeOptions& o) {
   check_cut_output(o.out.path);
@@ -184,14 +191,6 @@ MeshCommand merge_command(CLI::App& app) {
   return {merge, [o] { merge_cuts(*o); }};
 }
 
-struct SweepOptions {
-  MeshCommandOutput out;
-  std::vector<double> path;
-  V3 arc_centre{0, 0, 0}, arc_axis{0, 0, 1}, down{0, 0, -1};
-  std::array<double, 2> arc_angles{0, 0};
-  double arc_radius = 0, depth = 0, tilt = 0, resolution = 0, duration = 1;
-};
-
 void sweep_cut(const SweepOptions& o) {
   check_cut_output(o.out.path);
   BladePath path;
@@ -210,12 +209,11 @@ void sweep_cut(const SweepOptions& o) {
 
 MeshCommand sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
-  auto* sweep = add_mesh_command(app, "cut-sweep", "a blade's sweep: a segment hanging from a point moving along a "
-                                                   "polyline or a circular arc; cell array 'time' = when the blade makes "
-                                                   "each triangle (xfem-sweep; docs/FORMATS.md)",
-                                 "cut-sweep --arc-centre 0 0.09 0.05 --arc-radius 0.09 --arc-angles -150 -30 --depth "
-                                 "0.06 --resolution 0.003 -o sweep.vtp",
-                                 o->out);
+  auto* sweep = add_mesh_command(
+      app, "cut-sweep", "a blade's sweep: a segment hanging from a point moving along a polyline or a circular arc; "
+                        "cell array 'time' = when the blade makes each triangle (xfem-sweep; docs/FORMATS.md)",
+      "cut-sweep --arc-centre 0 0.09 0.05 --arc-radius 0.09 --arc-angles -150 -30 --depth 0.06 --resolution 0.003 "
+      "-o sweep.vtp", o->out);
   auto* op = sweep->add_option("--path", o->path, "the blade's top end moves along the polyline X1 Y1 Z1 X2 Y2 Z2 ... "
                                                   "(m, at least 2 points)");
   auto* oa = sweep->add_option("--arc-centre,--arc-center", o->arc_centre, "or along a circular arc about this centre, m");

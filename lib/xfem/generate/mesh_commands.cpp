@@ -35,12 +35,25 @@ void write_mesh(const TetMesh& m, const std::string& out) {
   cli::info(std::to_string(m.tets.rows()) + " tets, " + std::to_string(m.points.rows()) + " points -> " + out);
 }
 
+// The options of each command, bound to its CLI11 options.
 struct BoxOptions {
   MeshCommandOutput out;
   std::array<int, 3> cells{0, 0, 0};
   V3 lo{0, 0, 0}, hi{0, 0, 0};
   double split_z = 0, split_x = 0;
   bool beam = false;
+};
+
+struct UnstructuredBoxOptions {
+  MeshCommandOutput out;
+  V3 lo{0, 0, 0}, hi{0, 0, 0};
+  double size = 0;
+};
+
+struct SizedOptions {
+  MeshCommandOutput out;
+  std::string input;
+  double size = 0;
 };
 
 void make_box(const BoxOptions& o, bool split) {
@@ -71,12 +84,6 @@ MeshCommand box_command(CLI::App& app) {
   return {box, [o, sz] { make_box(*o, static_cast<bool>(*sz)); }};
 }
 
-struct UnstructuredBoxOptions {
-  MeshCommandOutput out;
-  V3 lo{0, 0, 0}, hi{0, 0, 0};
-  double size = 0;
-};
-
 MeshCommand unstructured_box_command(CLI::App& app) {
   auto o = std::make_shared<UnstructuredBoxOptions>();
   auto* ubox = add_mesh_command(app, "unstructured-box", "unstructured tet mesh of a box (CGAL Mesh_3), edges kept sharp",
@@ -94,12 +101,6 @@ MeshCommand unstructured_box_command(CLI::App& app) {
             write_mesh(unstructured_box_mesh(vec(lo), vec(hi), o->size), o->out.path);
           }};
 }
-
-struct SizedOptions {
-  MeshCommandOutput out;
-  std::string input;
-  double size = 0;
-};
 
 MeshCommand organ_command(CLI::App& app) {
   auto o = std::make_shared<SizedOptions>();
