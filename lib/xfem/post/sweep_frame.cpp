@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 
+#include "xfem/core/cli.h"
 #include "xfem/geometry/element_split.h"
+#include "xfem/io/matrix_market.h"
 
 namespace xfem {
 
@@ -40,6 +43,31 @@ SnapshotOptions sweep_pictures(const DeformedBody& frame, double scale, int widt
   picture.height = height;
   picture.edges = SnapshotOptions::Edges::Off;  // Auto would switch them off as the cut adds faces
   return picture;
+}
+
+std::string FrameFiles::in_dir(const std::string& name) const { return (std::filesystem::path(dir) / name).string(); }
+
+WrittenFrame write_frame(const UncutBody& body, const Problem& problem, const FrameFiles& files, int k,
+                         std::unique_ptr<CutSolution> step, double solved) {
+  WrittenFrame out;
+  const double begin = cli::now();
+  const EnrichedMesh& em = step->em;
+  complete_solution(body, *step);
+  out.frame = sweep_frame(*step, problem);
+  out.times.built = cli::now() - begin;
+  write_tet_mesh(out.frame.volume, files.in_dir(numbered("step_", k, ".vtu")), files.packing);
+  write_triangle_mesh(out.frame.wound, files.in_dir(numbered("step_", k, "_wound.vtp")), files.packing);
+  out.times.written = cli::now() - begin;  // what xfem-visualize does
+  if (files.solutions) {  // with the fingerprints xfem-solve writes, so xfem-visualize/-rmserror can check a frame's inputs
+    Provenance made_for{{"enriched", files.body}, {"problem", files.problem}};
+    if (em.cut) made_for["cut"] = fingerprint(em.cut->mesh());
+    write_vector(step->u, files.in_dir(numbered("u_", k, ".mtx")), provenance_comments(made_for));
+  }
+  if (files.cuts && em.cut) write_triangle_mesh(em.cut->mesh(), files.in_dir(numbered("cut_", k, ".vtp")));
+  out.k = k;
+  out.step = std::move(step);
+  out.times.solved = solved;
+  return out;
 }
 
 }  // namespace xfem
