@@ -210,12 +210,11 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   }
 }
 
-void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
-                                 Eigen::MatrixXd& k, int consistent_order, FaceIntegralCache* face_cache) {
-  // As element_stiffness: S = G^T G, row q of G the basis gradients at point q times sqrt(weight).
+void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
-  Eigen::MatrixXd gradients(q, 3 * n);
+  gradients.resize(q, 3 * n);
   BasisAt b;
   for (int p = 0; p < q; ++p) {
     enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
@@ -238,7 +237,14 @@ void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule&
       }
     }
   }
-  for (int p = 0; p < q; ++p) gradients.row(p) *= std::sqrt(rule.weights[p]);
+}
+
+void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,
+                                 Eigen::MatrixXd& k, int consistent_order, FaceIntegralCache* face_cache) {
+  // As element_stiffness: S = G^T G, row q of G the basis gradients at point q times sqrt(weight).
+  Eigen::MatrixXd gradients;
+  sampled_gradients(em, t, rule, consistent_order, face_cache, gradients);
+  for (int p = 0; p < rule.size(); ++p) gradients.row(p) *= std::sqrt(rule.weights[p]);
   stiffness_from_gradients(gradients, material, k);
 }
 

@@ -81,6 +81,14 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
 /// tet itself for an uncut one (side 0), each by append_tet_rule with order n.
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out);
 
+/// The gradients of tet t's enriched basis at the points of `rule` (q x 3|C|: row p, column 3c + a
+/// holds dPhi_c/dx_a at point p, the order of its C), evaluated with each point's side; with
+/// consistent_order > 0 the branch functions' gradients shifted as element_stiffness_at_points
+/// says. What every element quantity integrated on the rule is built from: the linear stiffness
+/// below, the nonlinear forces and tangent (element_forces.h).
+void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients);
+
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as
 /// element_stiffness of element_stiffness.h. With consistent_order > 0 the branch functions'

@@ -20,6 +20,25 @@ namespace {
 // 0.06 s without, docs/PERFORMANCE.md).
 constexpr double kThreadedBlasFlops = 1e9;
 
+// A view of Eigen's compressed columns (int indices, sorted): CHOLMOD reads the lower triangle
+// (stype -1) and ignores the rest, so neither a copy nor a triangle extraction is needed.
+cholmod_sparse lower_triangle_view(const SparseMatrix& A_in) {
+  SparseMatrix& A = const_cast<SparseMatrix&>(A_in);  // CHOLMOD's API is not const; it does not write
+  cholmod_sparse a{};
+  a.nrow = a.ncol = static_cast<size_t>(A.rows());
+  a.nzmax = static_cast<size_t>(A.nonZeros());
+  a.p = A.outerIndexPtr();
+  a.i = A.innerIndexPtr();
+  a.x = A.valuePtr();
+  a.stype = -1;
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  return a;
+}
+
 }  // namespace
 
 // cholmod_start / cholmod_finish and the factor, released on every path (exceptions included).
@@ -41,21 +60,7 @@ CholeskyFactor::CholeskyFactor(const SparseMatrix& A_in, Ordering order) : impl_
     throw Error("Cholesky factorization: the matrix is " + std::to_string(A_in.rows()) + " x " +
                 std::to_string(A_in.cols()) + ", not square");
   if (!A_in.isCompressed()) throw Error("Cholesky factorization: the matrix must be in compressed storage");
-  // A view of Eigen's compressed columns (int indices, sorted): CHOLMOD reads the lower triangle
-  // (stype -1) and ignores the rest, so neither a copy nor a triangle extraction is needed.
-  SparseMatrix& A = const_cast<SparseMatrix&>(A_in);  // CHOLMOD's API is not const; it does not write
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<size_t>(A.rows());
-  a.nzmax = static_cast<size_t>(A.nonZeros());
-  a.p = A.outerIndexPtr();
-  a.i = A.innerIndexPtr();
-  a.x = A.valuePtr();
-  a.stype = -1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_REAL;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
+  cholmod_sparse a = lower_triangle_view(A_in);
 
   Impl& s = *impl_;
   s.c.print = 0;  // the caller reports failures in its own words
@@ -79,7 +84,21 @@ CholeskyFactor::CholeskyFactor(const SparseMatrix& A_in, Ordering order) : impl_
   factor_nonzeros = s.c.lnz;
   flops = s.c.fl;
 
-  t0 = std::chrono::steady_clock::now();
+  factorize_numeric(&a);
+}
+
+void CholeskyFactor::refactor(const SparseMatrix& A_in) {
+  if (A_in.rows() != size() || A_in.cols() != size() || !A_in.isCompressed())
+    throw Error("Cholesky refactorization: the matrix is " + std::to_string(A_in.rows()) + " x " +
+                std::to_string(A_in.cols()) + ", the factor's size is " + std::to_string(size()));
+  cholmod_sparse a = lower_triangle_view(A_in);
+  factorize_numeric(&a);
+}
+
+void CholeskyFactor::factorize_numeric(void* matrix) {
+  cholmod_sparse& a = *static_cast<cholmod_sparse*>(matrix);
+  Impl& s = *impl_;
+  auto t0 = std::chrono::steady_clock::now();
   {
     std::unique_ptr<BlasThreads> one_thread;
     if (flops < kThreadedBlasFlops) one_thread = std::make_unique<BlasThreads>(1);

@@ -46,6 +46,10 @@ class CholeskyFactor {
   CholeskyFactor& operator=(const CholeskyFactor&) = delete;
 
   long size() const;
+  /// Factorizes A again with the first matrix's analysis (ordering and symbolic factor): A must
+  /// have the same size and pattern, e.g. the next tangent of a Newton iteration. Throws as the
+  /// constructor does; updates factor_seconds and rcond.
+  void refactor(const SparseMatrix& A);
   /// A^-1 B for every column of B at once (one pass over the factor per call). Safe to call from
   /// several threads: the calls take turns (CHOLMOD's workspace is shared).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
@@ -58,6 +62,7 @@ class CholeskyFactor {
   double analyze_seconds = 0, factor_seconds = 0;
 
  private:
+  void factorize_numeric(void* matrix);  // cholmod_sparse*: CHOLMOD's types stay out of this header
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -13,100 +13,12 @@
 #include "xfem/core/error.h"
 #include "xfem/core/parallel_for.h"
 #include "xfem/system/pieces.h"
+#include "xfem/system/stiffness_pattern.h"
 #include "xfem/geometry/tet_shape.h"
 #include "xfem/core/seconds_since.h"
 
 namespace xfem {
 namespace {
-
-// The lower triangle of K at the level of 3-vectors: for DOF column b the rows a >= b of every DOF
-// sharing a tet with b (rows[start[b]] == b), and for each tet a |C| x |C| table giving, for entry
-// pair (row entry q, column entry p) with C[q] >= C[p], the index of C[q] in column C[p]'s rows.
-struct Pattern {
-  std::vector<long> start;  // N + 1
-  std::vector<long> rows;
-  std::vector<long> table_offsets;  // T + 1
-  std::vector<int> table;
-};
-
-Pattern make_pattern(const EnrichedMesh& em) {
-  const long n = em.n;
-  const int tets = em.tets();
-  // DOF -> (tet, entry) incidence, CSR.
-  std::vector<long> first(n + 1, 0);
-  for (long d : em.dofs) ++first[d + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<int> incident_tet(em.dofs.size());
-  {
-    std::vector<long> fill(first.begin(), first.end() - 1);
-    for (int t = 0; t < tets; ++t)
-      for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) incident_tet[fill[em.dofs[e]]++] = t;
-  }
-  Pattern p;
-  p.table_offsets.resize(tets + 1);
-  p.table_offsets[0] = 0;
-  for (int t = 0; t < tets; ++t) p.table_offsets[t + 1] = p.table_offsets[t] + long(em.size(t)) * em.size(t);
-  p.table.assign(p.table_offsets[tets], -1);
-  p.start.resize(n + 1);
-  p.start[0] = 0;
-  p.rows.reserve(static_cast<std::size_t>(n) * 16);
-  std::vector<long> mark(n, -1);
-  std::vector<int> index(n, 0);
-  for (long b = 0; b < n; ++b) {
-    const long begin = static_cast<long>(p.rows.size());
-    for (long i = first[b]; i < first[b + 1]; ++i) {
-      const int t = incident_tet[i];
-      for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e) {
-        const long a = em.dofs[e];
-        if (a >= b && mark[a] != b) {
-          mark[a] = b;
-          p.rows.push_back(a);
-        }
-      }
-    }
-    std::sort(p.rows.begin() + begin, p.rows.end());
-    for (long r = begin; r < static_cast<long>(p.rows.size()); ++r) index[p.rows[r]] = static_cast<int>(r - begin);
-    p.start[b + 1] = static_cast<long>(p.rows.size());
-    for (long i = first[b]; i < first[b + 1]; ++i) {
-      const int t = incident_tet[i];
-      const int size = em.size(t);
-      const long base = em.offsets[t];
-      int col = 0;
-      while (em.dofs[base + col] != b) ++col;
-      for (int q = 0; q < size; ++q) {
-        const long a = em.dofs[base + q];
-        if (a >= b) p.table[p.table_offsets[t] + q * size + col] = index[a];
-      }
-    }
-  }
-  return p;
-}
-
-// Adds the lower part of element matrix k (3|C| x 3|C|) of tet t into the CSC arrays.
-template <class Matrix>
-void scatter(const EnrichedMesh& em, const Pattern& p, const std::vector<int>& outer, int t, const Matrix& k,
-             double* values) {
-  const int size = em.size(t);
-  const long base = em.offsets[t];
-  const int* table = p.table.data() + p.table_offsets[t];
-  for (int col = 0; col < size; ++col) {
-    const long b = em.dofs[base + col];
-    for (int q = 0; q < size; ++q) {
-      const int r = table[q * size + col];
-      if (r < 0) continue;
-      for (int i = 0; i < 3; ++i) {
-        // Column 3b+i lists rows 3b+i..3b+2 (its diagonal block), then 3 rows per further DOF.
-        double* column = values + outer[3 * b + i];
-        if (r == 0) {
-          for (int j = i; j < 3; ++j) column[j - i] += k(3 * q + j, 3 * col + i);
-        } else {
-          double* at = column + (3 - i) + 3 * (r - 1);
-          for (int j = 0; j < 3; ++j) at[j] += k(3 * q + j, 3 * col + i);
-        }
-      }
-    }
-  }
-}
 
 // The closed-form stiffness of a plain tet (tet_stiffness, formula (5) with constant gradients)
 // computed block by block straight into K: only the lower blocks the table names, only the lower
@@ -178,31 +90,9 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
   const Pattern p = make_pattern(em);
-  // Scalar columns: 3b+i holds 3 |rows(b)| - i entries.
-  const long n = em.n;
-  std::vector<int> outer(3 * n + 1, 0);
-  for (long b = 0; b < n; ++b) {
-    const long count = p.start[b + 1] - p.start[b];
-    for (int i = 0; i < 3; ++i) {
-      const long next = outer[3 * b + i] + 3 * count - i;
-      if (next > std::numeric_limits<int>::max())
-        throw Error("stiffness matrix: more than 2^31 nonzeros, too large for one machine");
-      outer[3 * b + i + 1] = static_cast<int>(next);
-    }
-  }
-  SparseMatrix K(static_cast<int>(3 * n), static_cast<int>(3 * n));
-  K.resizeNonZeros(outer.back());
-  std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
-  int* inner = K.innerIndexPtr();
-  for (long b = 0; b < n; ++b)
-    for (int i = 0; i < 3; ++i) {
-      int* at = inner + outer[3 * b + i];
-      for (int j = i; j < 3; ++j) *at++ = static_cast<int>(3 * b + j);
-      for (long r = p.start[b] + 1; r < p.start[b + 1]; ++r)
-        for (int j = 0; j < 3; ++j) *at++ = static_cast<int>(3 * p.rows[r] + j);
-    }
+  std::vector<int> outer;
+  SparseMatrix K = pattern_matrix(em, p, outer);
   double* values = K.valuePtr();
-  std::fill(values, values + outer.back(), 0.0);
   s.pattern_seconds += seconds_since(clock);
 
   // Plain tets first (closed form), enriched ones second (oversampling), each timed on its own.

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Dense>
+
+#include "xfem/integrate/element_points.h"
+#include "xfem/integrate/material_law.h"
+
+namespace xfem {
+
+/// One tet's share of the total-Lagrangian equilibrium under the element displacement `ue`
+/// (3|C|: entry 3c + i is component i of the tet's c-th DOF vector), in the reference
+/// configuration. At each point p, F = I + sum_c u_c (x) grad Phi_c, and
+///   energy = sum_p w_p Psi(F_p)                                  (J)
+///   r[3c + i] = sum_p w_p P_iJ(F_p) dPhi_c/dX_J                   (N, internal forces)
+///   k[3c + i][3d + k] = sum_p w_p A_iJkL(F_p) dPhi_c/dX_J dPhi_d/dX_L   (N/m, the tangent dr/du)
+/// With the linear model, k is the linear stiffness of the same points and r = k ue.
+struct ElementForces {
+  double energy = 0.0;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd k;
+  double min_J = 0.0;  ///< the smallest det F over the points
+};
+
+/// Evaluates the tet at `ue`; k only when `tangent`. Returns false, leaving `out` incomplete, when
+/// a point of a model other than "linear" has det F <= 0 (an inverted point: the solve rejects
+/// the step); the linear model never refuses.
+bool element_forces(const ElementPoints& points, const MaterialLaw& law, const Eigen::VectorXd& ue, bool tangent,
+                    ElementForces& out);
+
+/// The deformation gradient at point p: I + sum_c u_c (x) grad Phi_c.
+Eigen::Matrix3d deformation_gradient(const ElementPoints& points, int p, const Eigen::VectorXd& ue);
+
+}  // namespace xfem

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/integrate/element_points.h"
+
+#include <cmath>
+#include <vector>
+
+#include "xfem/geometry/tet_shape.h"
+
+namespace xfem {
+
+void element_points(const EnrichedMesh& em, const CutElementSplits& splits, int t, int order,
+                    FaceIntegralCache* face_cache, ElementPoints& out) {
+  const int n = em.size(t);
+  const long base = em.offsets[t];
+  if (em.plain(t)) {
+    const TetShape shape = tet_shape(em.mesh, t);
+    out.weight.setConstant(1, std::abs(shape.volume));
+    out.gradient.resize(1, 3 * n);
+    for (int c = 0; c < n; ++c)
+      for (int a = 0; a < 3; ++a) out.gradient(0, 3 * c + a) = shape.grad(em.local[base + c], a);
+    return;
+  }
+  PointRule rule;
+  conforming_rule(em, splits, t, order, rule);
+  Eigen::MatrixXd gradients;
+  sampled_gradients(em, t, rule, order, face_cache, gradients);
+  bool branch = false;
+  for (long e = base; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  const int q = rule.size();
+  if (branch) {
+    out.weight = Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), q);
+    out.gradient = std::move(gradients);
+    return;
+  }
+  // Sign enrichment only: one point per distinct gradient row (one per side or region).
+  std::vector<int> first;       // the distinct rows, by their first point
+  std::vector<double> weights;  // their summed weights
+  for (int p = 0; p < q; ++p) {
+    std::size_t k = 0;
+    while (k < first.size() && gradients.row(first[k]) != gradients.row(p)) ++k;
+    if (k == first.size()) {
+      first.push_back(p);
+      weights.push_back(0.0);
+    }
+    weights[k] += rule.weights[p];
+  }
+  out.weight = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<long>(weights.size()));
+  out.gradient.resize(static_cast<long>(first.size()), 3 * n);
+  for (std::size_t k = 0; k < first.size(); ++k) out.gradient.row(static_cast<long>(k)) = gradients.row(first[k]);
+}
+
+}  // namespace xfem

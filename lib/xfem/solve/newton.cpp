@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/solve/newton.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "xfem/core/cli.h"
+#include "xfem/core/error.h"
+#include "xfem/core/seconds_since.h"
+#include "xfem/solve/cholmod_solver.h"
+#include "xfem/system/dirichlet.h"
+
+namespace xfem {
+
+namespace {
+
+// The state of one load step's Newton iterations.
+struct StepContext {
+  const NonlinearProblem& problem;
+  const NewtonOptions& options;
+  const std::vector<long>& fixed;
+  std::vector<char> is_fixed;
+  SparseMatrix K;  // the tangent, lower triangle, K's pattern
+  std::unique_ptr<CholeskyFactor>& factor;
+  NewtonResult& result;
+};
+
+double norm_on(const Eigen::VectorXd& v, const std::vector<char>& is_fixed, bool fixed_ones) {
+  double s = 0.0;
+  for (long i = 0; i < v.size(); ++i)
+    if (static_cast<bool>(is_fixed[i]) == fixed_ones) s += v[i] * v[i];
+  return std::sqrt(s);
+}
+
+// Newton at load factor s from u (a valid state); on success u is the equilibrium.
+bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
+  const EnrichedMesh& em = *c.problem.em;
+  std::vector<long> fixed;
+  std::vector<double> target;
+  c.problem.dirichlet(s, fixed, target);
+  if (fixed != c.fixed) throw Error("the Dirichlet conditions fix other DOFs at load factor " + cli::three_digits(s));
+  const Eigen::VectorXd fs = s * c.problem.f;
+  Eigen::VectorXd r, r_trial, R;
+  double energy = 0.0;
+  for (int it = 0; it <= c.options.max_iterations; ++it) {
+    auto clock = std::chrono::steady_clock::now();
+    if (!internal_forces(em, *c.problem.body, c.problem.law, u, energy, r, &c.K)) return false;
+    step.assemble_seconds += seconds_since(clock);
+    R = r - fs;
+    const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), 1e-300});
+    const double residual = norm_on(R, c.is_fixed, false) / scale;
+    std::vector<double> change(fixed.size());
+    bool at_target = true;
+    for (std::size_t k = 0; k < fixed.size(); ++k) {
+      change[k] = target[k] - u[fixed[k]];
+      at_target = at_target && change[k] == 0.0;
+    }
+    step.iterations.push_back({residual, 1.0});
+    if (c.options.detail)
+      c.options.detail("load " + cli::three_digits(s) + ", iteration " + std::to_string(it) + ": relative residual " +
+                       cli::three_digits(residual));
+    if (at_target && residual <= c.options.rtol) {
+      step.final_residual = residual;
+      step.iterations.back().step = 0.0;  // no step taken: converged
+      return true;
+    }
+    if (it == c.options.max_iterations) return false;
+    // K_ff du_f = -(R_f + K_fc du_c), the same pattern every time: one analysis, many factorizations.
+    const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
+    const ReducedSystem reduced = eliminate_dirichlet(full, -R, fixed, change);
+    clock = std::chrono::steady_clock::now();
+    try {
+      if (!c.factor) {
+        c.factor = std::make_unique<CholeskyFactor>(reduced.K, c.options.ordering == "amd" ? Ordering::Amd : Ordering::Metis);
+        c.result.analyze_seconds = c.factor->analyze_seconds;
+      } else {
+        c.factor->refactor(reduced.K);
+      }
+    } catch (const NotPositiveDefinite&) {
+      return false;  // the tangent lost definiteness (buckling, a too large step): halve the step
+    }
+    ++c.result.factorizations;
+    step.factor_seconds += seconds_since(clock);
+    const Eigen::VectorXd x = c.factor->solve(reduced.f);
+    const Eigen::VectorXd du = expand_solution(reduced, x, fixed, change);
+    // Line search: halve while a point inverts or the residual grows.
+    const double before = norm_on(R, c.is_fixed, false);
+    double alpha = 1.0;
+    bool accepted = false;
+    Eigen::VectorXd trial;
+    for (int k = 0; k <= 10 && !accepted; ++k, alpha /= 2) {
+      trial = u + alpha * du;
+      if (k == 0)
+        for (std::size_t j = 0; j < fixed.size(); ++j) trial[fixed[j]] = target[j];  // exactly, not u + (target - u)
+      double e_trial = 0.0;
+      clock = std::chrono::steady_clock::now();
+      const bool valid = internal_forces(em, *c.problem.body, c.problem.law, trial, e_trial, r_trial, nullptr);
+      step.assemble_seconds += seconds_since(clock);
+      if (!valid) continue;
+      accepted = !at_target || norm_on(r_trial - fs, c.is_fixed, false) <= before;
+      if (accepted) step.iterations.back().step = alpha;
+    }
+    if (!accepted) return false;
+    u = trial;
+  }
+  return false;
+}
+
+}  // namespace
+
+NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& options) {
+  const EnrichedMesh& em = *problem.em;
+  if (options.load_steps < 1) throw Error("load_steps must be at least 1");
+  NewtonResult result;
+  problem.dirichlet(1.0, result.fixed, result.fixed_values);
+  std::vector<int> outer;
+  std::unique_ptr<CholeskyFactor> factor;
+  StepContext context{problem, options, result.fixed, std::vector<char>(3 * em.n, 0),
+                      pattern_matrix(em, problem.body->pattern, outer), factor, result};
+  for (long d : result.fixed) context.is_fixed[d] = 1;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * em.n);
+  const double full_step = 1.0 / options.load_steps;
+  double done = 0.0, step = full_step;
+  while (done < 1.0) {
+    const double s = done + step >= 1.0 - 1e-12 ? 1.0 : done + step;
+    LoadStep attempt;
+    attempt.load = s;
+    Eigen::VectorXd next = u;
+    attempt.converged = newton_at(context, s, next, attempt);
+    result.steps.push_back(attempt);
+    if (attempt.converged) {
+      u = next;
+      done = s;
+      if (options.info)
+        options.info("load " + cli::three_digits(s) + ": " + std::to_string(attempt.iterations.size() - 1) +
+                     " Newton iterations, relative residual " + cli::three_digits(attempt.final_residual));
+      continue;
+    }
+    if (step < full_step / std::pow(2.0, options.max_halvings) * 1.5)
+      throw Error("Newton's method failed at load factor " + cli::three_digits(s) + " after halving the load step " +
+                  std::to_string(options.max_halvings) + " times (last relative residual " +
+                  cli::three_digits(attempt.iterations.empty() ? 0.0 : attempt.iterations.back().residual) +
+                  "): give more load_steps, or a smaller load");
+    step /= 2;
+    if (options.info) options.info("load " + cli::three_digits(s) + ": no convergence, the step halved");
+  }
+  result.u = u;
+  internal_forces(em, *problem.body, problem.law, u, result.energy, result.r, nullptr, &result.min_J);
+  return result;
+}
+
+}  // namespace xfem

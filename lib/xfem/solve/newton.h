@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "xfem/system/nonlinear_assembly.h"
+
+namespace xfem {
+
+/// The nonlinear equilibrium r(u) = s f for load factors s rising to 1 in load steps, with the
+/// Dirichlet values of load factor s (a rotation is turned by s times its angle: dirichlet_data).
+struct NonlinearProblem {
+  const EnrichedMesh* em = nullptr;
+  const BodyIntegration* body = nullptr;
+  MaterialLaw law;
+  Eigen::VectorXd f;  ///< external loads at s = 1 (3N, N), proportional to s
+  /// The constrained scalar DOFs (increasing, the same at every s) and their values at s.
+  std::function<void(double s, std::vector<long>& fixed, std::vector<double>& values)> dirichlet;
+};
+
+struct NewtonOptions {
+  int load_steps = 1;       ///< equal steps of s to reach 1
+  int max_iterations = 25;  ///< Newton iterations per step before the step is halved
+  int max_halvings = 6;     ///< a step halved at most this often (1/64 of a load step)
+  double rtol = 1e-8;       ///< converged: ||r - s f|| on the free DOFs <= rtol * its scale (below)
+  std::string ordering = "metis";
+  /// Progress: a line per load step (`info`) and per Newton iteration (`detail`); either may be empty.
+  std::function<void(const std::string&)> info, detail;
+};
+
+/// One Newton iteration: the residual before it, the line search's step length.
+struct NewtonIteration {
+  double residual = 0.0;  ///< ||r(u) - s f|| on the free DOFs, divided by the scale
+  double step = 1.0;      ///< the line search's alpha
+};
+
+/// One load step as it finished (a failed attempt is followed by two halves).
+struct LoadStep {
+  double load = 0.0;                       ///< s at its end
+  bool converged = false;
+  std::vector<NewtonIteration> iterations;
+  double final_residual = 0.0;             ///< relative residual at the accepted u
+  double factor_seconds = 0.0, assemble_seconds = 0.0;
+};
+
+struct NewtonResult {
+  Eigen::VectorXd u;                 ///< 3N, metres
+  Eigen::VectorXd r;                 ///< internal forces r(u) (3N, N); r - f are the reactions
+  std::vector<LoadStep> steps;       ///< every attempt, the failed ones included
+  std::vector<long> fixed;
+  std::vector<double> fixed_values;  ///< at s = 1
+  double energy = 0.0;               ///< strain energy at u (J)
+  double min_J = 0.0;                ///< smallest det F at u
+  int factorizations = 0;
+  double analyze_seconds = 0.0;      ///< the one symbolic analysis
+};
+
+/// Solves the problem with Newton's method and a backtracking line search in load steps:
+///  - each iteration solves K_ff du_f = -(R_f + K_fc du_c) (K the tangent, R = r(u) - s f, du_c
+///    the remaining change of the Dirichlet values) with CHOLMOD, one symbolic analysis for every
+///    factorization of the solve;
+///  - the line search halves the step (up to 10 times) while a point of a nonlinear model would
+///    invert (det F <= 0) or the residual would grow (an iteration that moves the Dirichlet
+///    values is taken if it inverts nothing);
+///  - a load step whose Newton iterations fail (no convergence in max_iterations, a line search
+///    that finds no step, a tangent that is not positive definite) is tried again as two halves,
+///    at most max_halvings times.
+/// The residual's scale is the larger of ||s f|| and the internal forces on the constrained DOFs
+/// (the reactions), so that a displacement-driven problem converges relative to its forces.
+/// Throws xfem::Error naming the load factor when a step fails after the last halving.
+NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& options);
+
+}  // namespace xfem
