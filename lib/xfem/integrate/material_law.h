@@ -37,12 +37,19 @@ struct StressAt {
   Eigen::Matrix<double, 9, 9> A = Eigen::Matrix<double, 9, 9>::Zero();
 };
 
-/// Evaluates `law` at F. For NeoHookean, J = det F <= 0 has no energy: returns false (the caller
+/// Evaluates `law` at F (implementations: material_law.cpp for Linear, material_corotational.h,
+/// material_neo_hookean.h). For NeoHookean, J = det F <= 0 has no energy: returns false (the caller
 /// rejects the step) and leaves `out` unspecified; every other case returns true.
 bool stress_at(const MaterialLaw& law, const Eigen::Matrix3d& F, StressAt& out);
 
 /// The Cauchy stress sigma = P F^T / J of a point (Pa), for output; J <= 0 gives NaNs (callers
 /// check J first).
 Eigen::Matrix3d cauchy_stress(const Eigen::Matrix3d& P, const Eigen::Matrix3d& F);
+
+/// The cofactor matrix of F, cof F = J F^-T = d det F / d F, defined for every F (also J <= 0).
+Eigen::Matrix3d cofactor(const Eigen::Matrix3d& F);
+/// Its derivative d (cof F)_iJ / d F_kL = eps_ikl eps_JLM F_lM at (3 i + J, 3 k + L): the second
+/// derivative of det F, symmetric.
+Eigen::Matrix<double, 9, 9> cofactor_derivative(const Eigen::Matrix3d& F);
 
 }  // namespace xfem

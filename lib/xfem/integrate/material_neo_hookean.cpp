@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// Compressible neo-Hookean: Psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, docs/METHOD.md
+// "Material models".
+#include "xfem/integrate/material_neo_hookean.h"
+
+#include <cmath>
+
+namespace xfem {
+
+bool neo_hookean_stress(const Lame& lame, const Eigen::Matrix3d& F, StressAt& out) {
+  const double J = F.determinant();
+  if (!(J > 0.0)) return false;
+  const double mu = lame.mu, lambda = lame.lambda, lnJ = std::log(J);
+  const Eigen::Matrix3d G = F.inverse().transpose();  // F^-T = d ln J / dF
+  out.energy = 0.5 * mu * (F.squaredNorm() - 3.0) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+  out.P = mu * (F - G) + lambda * lnJ * G;
+  // d G_iJ / d F_kL = -G_iL G_kJ (from d F^-1 = -F^-1 dF F^-1), d ln J / d F_kL = G_kL.
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int L = 0; L < 3; ++L)
+          out.A(3 * i + j, 3 * k + L) = (i == k && j == L ? mu : 0.0) + lambda * G(i, j) * G(k, L) +
+                                        (mu - lambda * lnJ) * G(i, L) * G(k, j);
+  return true;
+}
+
+}  // namespace xfem
