@@ -103,7 +103,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
     j["materials"] = 1;
     CHECK(error_of(j) ==
           "problem.json: unknown key 'materials' (allowed here: description, material, integration, dirichlet, "
-          "neumann, body_force)");
+          "neumann, body_force, load_steps)");
   }
   SECTION("wrong type") {
     j["dirichlet"][0]["value"] = {0, "zero", 0};
@@ -185,4 +185,55 @@ TEST_CASE("problem: a linear exact field parses and gives t + G x on both sides"
   CHECK_THAT(error_of(j), Catch::Contains("dirichlet[0].exact.linear.gradient must be a list of 3 rows"));
   j["dirichlet"][0]["exact"] = xfem::Json::parse(R"({"linear": {"gradient": [[1, 0, 0], [0, 1, 0], [0, 0]]}})");
   CHECK_THAT(error_of(j), Catch::Contains("must be a list of 3 numbers"));
+}
+
+TEST_CASE("problem: material.model and load_steps default to linear and 1, and parse", "[problem]") {
+  xfem::Json j = beam();
+  xfem::Problem p = xfem::parse_problem(j, "problem.json");
+  CHECK(p.model == xfem::MaterialModel::Linear);
+  CHECK(p.load_steps == 1);
+  j["material"]["model"] = "neo-hookean";
+  j["load_steps"] = 20;
+  p = xfem::parse_problem(j, "problem.json");
+  CHECK(p.model == xfem::MaterialModel::NeoHookean);
+  CHECK(p.load_steps == 20);
+  CHECK(p.E == 300e3);  // the rest of the file keeps its meaning
+  CHECK(p.dirichlet.size() == 2);
+  j["material"]["model"] = "corotational";
+  CHECK(xfem::parse_problem(j, "problem.json").model == xfem::MaterialModel::Corotational);
+  j["material"]["model"] = "linear";
+  CHECK(xfem::parse_problem(j, "problem.json").model == xfem::MaterialModel::Linear);
+}
+
+TEST_CASE("problem: a bad material.model or load_steps gives one error line naming the file", "[problem]") {
+  xfem::Json j = beam();
+  SECTION("unknown model") {
+    j["material"]["model"] = "neohookean";
+    CHECK(error_of(j) ==
+          "problem.json: material.model must be \"linear\", \"corotational\" or \"neo-hookean\", got \"neohookean\"");
+  }
+  SECTION("model not a string") {
+    j["material"]["model"] = 1;
+    CHECK(error_of(j) == "problem.json: material.model must be a string");
+  }
+  SECTION("unknown key in material lists model") {
+    j["material"]["modle"] = "linear";
+    CHECK(error_of(j) == "problem.json: unknown key 'material.modle' (allowed here: E, nu, model)");
+  }
+  SECTION("zero load steps") {
+    j["load_steps"] = 0;
+    CHECK(error_of(j) == "problem.json: load_steps must be an integer in 1..1000000, got 0");
+  }
+  SECTION("fractional load steps") {
+    j["load_steps"] = 2.5;
+    CHECK(error_of(j) == "problem.json: load_steps must be an integer in 1..1000000, got 2.5");
+  }
+  SECTION("load steps as a string") {
+    j["load_steps"] = "10";
+    CHECK(error_of(j) == "problem.json: load_steps must be an integer in 1..1000000, got \"10\"");
+  }
+  SECTION("too many load steps") {
+    j["load_steps"] = 10000000000LL;
+    CHECK(error_of(j) == "problem.json: load_steps must be an integer in 1..1000000, got 10000000000");
+  }
 }

@@ -180,16 +180,31 @@ std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").s
 
 Problem parse_problem(const Json& j, const std::string& file) {
   const Node root{j, file, ""};
-  root.require_object({"description", "material", "integration", "dirichlet", "neumann", "body_force"});
+  root.require_object({"description", "material", "integration", "dirichlet", "neumann", "body_force", "load_steps"});
   Problem p;
   p.file = file;
   if (root.has("description")) root.at("description").string();
   const Node material = root.at("material");
-  material.require_object({"E", "nu"});
+  material.require_object({"E", "nu", "model"});
   p.E = material.at("E").number();
   if (!(p.E > 0)) material.at("E").fail("must be positive, got " + material.at("E").j.dump());
   p.nu = material.at("nu").number();
   if (!(p.nu > -1.0 && p.nu < 0.5)) material.at("nu").fail("must lie in (-1, 0.5), got " + material.at("nu").j.dump());
+  if (material.has("model")) {
+    const Node model = material.at("model");
+    const std::string name = model.string();
+    try {
+      p.model = material_model_named(name);
+    } catch (const Error&) {
+      model.fail("must be \"linear\", \"corotational\" or \"neo-hookean\", got \"" + name + "\"");
+    }
+  }
+  if (root.has("load_steps")) {
+    const Node steps = root.at("load_steps");
+    if (!steps.j.is_number_integer() || steps.j.get<long>() < 1 || steps.j.get<long>() > 1000000)
+      steps.fail("must be an integer in 1..1000000, got " + steps.j.dump());
+    p.load_steps = steps.j.get<int>();
+  }
   if (root.has("integration")) {
     const Node integration = root.at("integration");
     integration.require_object({"points", "refine", "rule", "order"});

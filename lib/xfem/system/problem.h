@@ -9,6 +9,7 @@
 #include "xfem/fracture/exact_fields.h"
 #include "xfem/core/json_io.h"
 #include "xfem/core/mesh.h"
+#include "xfem/integrate/material_law.h"
 
 namespace xfem {
 
@@ -52,6 +53,11 @@ struct Problem {
   std::string file;     ///< where it was read from, for messages
   double E = 0.0;       ///< Young's modulus, Pa, > 0
   double nu = 0.0;      ///< Poisson's ratio, in (-1, 0.5)
+  /// material.model: the law of the nonlinear solve (material_law.h); the linear tools ignore it.
+  MaterialModel model = MaterialModel::Linear;
+  /// load_steps: the nonlinear solve applies the loads in this many equal steps (>= 1); the
+  /// linear tools ignore it.
+  int load_steps = 1;
   int points = 30;      ///< oversampling points requested per enriched tet (paper: 30 for the beam)
   int refine = 0;       ///< levels of refinement at the cut in cut tets (0 = the paper's rule)
   /// How tets with enriched DOFs are integrated: the paper's oversampling (points, refine), or the
@@ -67,7 +73,8 @@ struct Problem {
 
 /// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
 /// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
-/// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box, e.g. "problem.json: material.E must be positive, got -3".
+/// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box,
+/// an unknown material.model, a load_steps outside 1..1000000, e.g. "problem.json: material.E must be positive, got -3".
 Problem read_problem(const std::string& path);
 /// The same from parsed JSON; `file` names it in messages.
 Problem parse_problem(const Json& j, const std::string& file);
