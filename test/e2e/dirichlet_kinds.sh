@@ -22,6 +22,25 @@ chain() {  # chain <mesh> <problem> <prefix>: the uncut chain to <prefix>u.mtx, 
   "$B/xfem-solve" -q "$3system" -o "$3u.mtx" || fail "solve $2"
 }
 
+# compare(prefix, want, label): run PREFIX's u against want(X) at every node, to 1e-9 relative.
+cat >compare.py <<'EOF'
+def column(path):  # a Matrix Market array, 1 column
+    rows = [l for l in open(path) if not l.startswith("%")]
+    return [float(v) for v in rows[1:]]
+def compare(prefix, want, label):
+    u, X = column(prefix + "u.mtx"), column(prefix + "system/coordinates.mtx")
+    n = len(X) // 3
+    assert len(u) == 3 * n, (n, len(u))
+    worst, largest = 0.0, 0.0
+    for k in range(n):
+        w = want(X[3 * k:3 * k + 3])
+        largest = max(largest, max(abs(v) for v in w))
+        worst = max(worst, max(abs(u[3 * k + i] - w[i]) for i in range(3)))
+    print("%s: max |u - exact| = %.3g over %d nodes, max |exact| = %.3g" % (label, worst, n, largest))
+    assert largest > 1e-4 and worst <= 1e-9 * largest
+    return [X[3 * k:3 * k + 3] for k in range(n)]
+EOF
+
 # --- rotation --------------------------------------------------------------------------------
 "$B/xfem-mesh" -q box --cells 3 4 5 --hi 0.02 0.03 0.04 -o box.vtu || fail "xfem-mesh box"
 python3 - <<'EOF' || fail "writing rotation.json"
@@ -41,26 +60,16 @@ EOF
 chain box.vtu rotation.json rot-
 python3 - <<'EOF' || fail "rotation: u is not the rigid motion at every node"
 import math
-def column(path):
-    rows = [l for l in open(path) if not l.startswith("%")]
-    return [float(v) for v in rows[1:]]
-u, X = column("rot-u.mtx"), column("rot-system/coordinates.mtx")
-n = len(X) // 3
-assert n == 4 * 5 * 6 and len(u) == 3 * n, (n, len(u))
+from compare import compare
 axis = [1 / 3, 2 / 3, 2 / 3]; angle = 0.001; c = [0.01, 0.015, 0.02]; t = [1e-4, 0, -2e-4]
 def rotate(v):  # Rodrigues: v cos + (k x v) sin + k (k . v)(1 - cos)
     kxv = [axis[1] * v[2] - axis[2] * v[1], axis[2] * v[0] - axis[0] * v[2], axis[0] * v[1] - axis[1] * v[0]]
     kv = sum(a * b for a, b in zip(axis, v))
     return [v[i] * math.cos(angle) + kxv[i] * math.sin(angle) + axis[i] * kv * (1 - math.cos(angle)) for i in range(3)]
-worst, largest = 0.0, 0.0
-for k in range(n):
-    x = X[3 * k:3 * k + 3]
+def rigid(x):  # R (X - c) + c + t - X
     arm = [x[i] - c[i] for i in range(3)]
-    want = [r - a + ti for r, a, ti in zip(rotate(arm), arm, t)]
-    largest = max(largest, max(abs(w) for w in want))
-    worst = max(worst, max(abs(u[3 * k + i] - want[i]) for i in range(3)))
-print("rotation: max |u - (R(X-c)+c+t-X)| = %.3g over %d nodes, max |u| = %.3g" % (worst, n, largest))
-assert largest > 1e-4 and worst <= 1e-9 * largest
+    return [r - a + ti for r, a, ti in zip(rotate(arm), arm, t)]
+assert len(compare("rot-", rigid, "rotation (R (X - c) + c + t - X)")) == 4 * 5 * 6
 EOF
 
 # --- value_array -----------------------------------------------------------------------------
@@ -102,20 +111,10 @@ problem("scalar.json", {"value_array": "boundary"})
 EOF
 chain field.vtk value_array.json va-
 python3 - <<'EOF' || fail "value_array: the interior nodes are not at the linear field"
-def column(path):
-    rows = [l for l in open(path) if not l.startswith("%")]
-    return [float(v) for v in rows[1:]]
-u, X = column("va-u.mtx"), column("va-system/coordinates.mtx")
+from compare import compare
 A = [[0.01, -0.02, 0.005], [0.003, 0.02, -0.01], [-0.004, 0.007, 0.015]]; b = [1e-4, -2e-4, 3e-4]
-worst, largest, interior = 0.0, 0.0, 0
-for k in range(len(X) // 3):
-    x = X[3 * k:3 * k + 3]
-    want = [sum(A[r][m] * x[m] for m in range(3)) + b[r] for r in range(3)]
-    largest = max(largest, max(abs(w) for w in want))
-    worst = max(worst, max(abs(u[3 * k + i] - want[i]) for i in range(3)))
-    interior += all(1e-12 < c < 0.04 - 1e-12 for c in x)
-print("value_array: max |u - (A X + b)| = %.3g over %d nodes (%d interior), max |u| = %.3g" % (worst, len(X) // 3, interior, largest))
-assert interior == 27 and largest > 1e-4 and worst <= 1e-9 * largest
+X = compare("va-", lambda x: [sum(A[r][m] * x[m] for m in range(3)) + b[r] for r in range(3)], "value_array (A X + b)")
+assert len(X) == 125 and sum(all(1e-12 < c < 0.04 - 1e-12 for c in x) for x in X) == 27  # 27 interior nodes, solved for
 EOF
 
 # Bad value_array conditions: one line naming the problem file, the condition and the array.
