@@ -97,7 +97,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
   }
   SECTION("unknown key") {
     j["dirichlet"][1]["valeu"] = 1;
-    CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value, exact, enriched_dofs)");
+    CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value, exact, enriched_dofs, rotation, value_array)");
   }
   SECTION("unknown top-level key") {
     j["materials"] = 1;
@@ -165,7 +165,7 @@ TEST_CASE("problem: exact Dirichlet fields parse, taking E and nu from the mater
   CHECK_THAT(error_of(j), Catch::Contains("must be \"free\" or \"exact\""));
   j["dirichlet"][0].erase("enriched_dofs");
   j["dirichlet"][0]["value"] = {0, 0, 0};
-  CHECK_THAT(error_of(j), Catch::Contains("one of value, exact, not both"));
+  CHECK_THAT(error_of(j), Catch::Contains("dirichlet[0] must have exactly one of value, exact, rotation, value_array"));
 }
 
 TEST_CASE("problem: a linear exact field parses and gives t + G x on both sides", "[problem]") {

@@ -4,10 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <map>
 #include <numeric>
 
-#include "xfem/enrich/branch_functions.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
@@ -172,78 +170,6 @@ Eigen::VectorXd load_vector(const EnrichedMesh& em, const Problem& problem) {
     if (count == 0) throw Error(what + " selects no boundary face (all three nodes of a face must be selected)");
   }
   return f;
-}
-
-namespace {
-
-// Per node, the first of its 4 branch DOF vectors (paper 3.3 numbering), or -1.
-std::vector<long> branch_dof_of_node(const EnrichedMesh& em) {
-  std::vector<long> first(em.mesh.points.rows(), -1);
-  for (int t = 0; t < em.tets(); ++t)
-    for (long e = em.offsets[t]; e < em.offsets[t + 1]; ++e)
-      if (em.dofs[e] >= em.np + em.ns) {
-        long& f = first[em.mesh.tets(t, em.local[e])];
-        f = f < 0 ? em.dofs[e] : std::min(f, em.dofs[e]);
-      }
-  return first;
-}
-
-}  // namespace
-
-void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<long>& fixed,
-                    std::vector<double>& values) {
-  std::map<long, std::pair<double, std::size_t>> prescribed;  // dof -> (value, condition)
-  static const char* axis = "xyz";
-  std::vector<long> branch_of;  // built on first need
-  const double diagonal = (em.mesh.points.colwise().maxCoeff() - em.mesh.points.colwise().minCoeff()).norm();
-  for (std::size_t c = 0; c < problem.dirichlet.size(); ++c) {
-    const DirichletCondition& d = problem.dirichlet[c];
-    const std::string what = describe(problem, "dirichlet", c);
-    auto prescribe = [&](long dof, double v) {
-      const auto [it, inserted] = prescribed.emplace(dof, std::make_pair(v, c));
-      if (!inserted && it->second.first != v) {
-        const long vector = dof / 3;
-        const std::string where = vector < em.np ? "node " + std::to_string(vector) : "DOF vector " + std::to_string(vector);
-        throw Error(what + " and " + describe(problem, "dirichlet", it->second.second).substr(problem.file.size() + 2) +
-                    " prescribe different values for " + where + " component " + axis[dof % 3]);
-      }
-    };
-    for (int k : select_nodes(d.selector, em.mesh, what)) {
-      if (!d.exact) {
-        for (int i = 0; i < 3; ++i)
-          if (d.value[i]) prescribe(3L * k + i, *d.value[i]);
-        continue;
-      }
-      // The exact field at the node, on the node's own side (decided once, by xfem-classify).
-      const Eigen::Vector3d x = em.mesh.points.row(k).transpose();
-      const int side = em.side.empty() ? 1 : em.side[k];
-      Eigen::Vector3d u = d.exact->displacement(x, side);
-      if (d.exact_enriched) {
-        if (branch_of.empty()) branch_of = branch_dof_of_node(em);
-        if (branch_of[k] >= 0) {
-          // u_h(x_k) = U_k + sum_j F_j(x_k) A_kj (unshifted ACTFs, paper 3.4): A_kj = the field's
-          // coefficients, U_k what the ACTFs leave of u(x_k) (0 when every node is enriched).
-          const CrackTipFrame frame = em.front.frame(x);
-          Eigen::Matrix<double, 3, 4> C;
-          try {
-            C = d.exact->williams.branch_coefficients(frame, 1e-8 * diagonal);
-          } catch (const Error& e) {
-            throw Error(what + ", node " + std::to_string(k) + ": " + e.what());
-          }
-          u -= C * branch_functions(frame, x, side).F;
-          for (int j = 0; j < 4; ++j)
-            for (int i = 0; i < 3; ++i) prescribe(3 * (branch_of[k] + j) + i, C(i, j));
-        }
-      }
-      for (int i = 0; i < 3; ++i) prescribe(3L * k + i, u[i]);
-    }
-  }
-  fixed.clear();
-  values.clear();
-  for (const auto& [dof, v] : prescribed) {
-    fixed.push_back(dof);
-    values.push_back(v.first);
-  }
 }
 
 std::vector<long> unsupported_dofs(const SparseMatrix& K, long first) {

@@ -10,6 +10,7 @@
 #include "xfem/io/matrix_market.h"
 #include "xfem/integrate/oversampling_quadrature.h"
 #include "xfem/system/problem.h"
+#include "xfem/system/dirichlet_data.h"
 
 namespace xfem {
 
@@ -38,17 +39,6 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
 /// each boundary face (a face of exactly one tet) whose three nodes the condition selects.
 /// Throws xfem::Error naming the condition when it selects no node or no boundary face.
 Eigen::VectorXd load_vector(const EnrichedMesh& em, const Problem& problem);
-
-/// The Dirichlet data: scalar DOFs 3k + i of the ORIGINAL nodal DOFs of the selected nodes with
-/// their values, increasing. An exact condition gives each node the field's displacement at the
-/// node on its side (em.side); with exact_enriched, a selected branch-enriched node also gets its
-/// 4 branch DOF vectors fixed to the field's crack-tip coefficients and its original DOF shifted
-/// so that the discrete displacement at the node is exact (docs/FORMATS.md "problem.json").
-/// Throws xfem::Error naming the condition when it selects no node, when a Williams field's front
-/// is not the mesh's (exact_enriched), or both conditions when two prescribe different values for
-/// the same DOF.
-void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<long>& fixed,
-                    std::vector<double>& values);
 
 /// The 3-vector DOFs k >= `first` whose diagonal block of K (from stiffness_matrix: lower
 /// triangle, diagonal first in each column) is exactly zero: enriched functions without support,

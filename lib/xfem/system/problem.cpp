@@ -174,6 +174,17 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
   return f;
 }
 
+// A finite rigid motion (DirichletCondition::rotation): the axis need not be a unit vector.
+PrescribedRotation parse_rotation(const Node& n) {
+  n.require_object({"axis", "angle_deg", "center", "translation"});
+  PrescribedRotation r;
+  r.axis = unit(n.at("axis"));
+  r.angle = n.at("angle_deg").number() * (M_PI / 180.0);
+  if (n.has("center")) r.centre = n.at("center").vector3();
+  if (n.has("translation")) r.translation = n.at("translation").vector3();
+  return r;
+}
+
 std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
 
 }  // namespace
@@ -240,12 +251,25 @@ Problem parse_problem(const Json& j, const std::string& file) {
     const Node list = root.at("dirichlet");
     for (std::size_t i = 0; i < list.array_size(); ++i) {
       const Node c = list.at(i);
-      c.require_object({"name", "selector", "value", "exact", "enriched_dofs"});
+      c.require_object({"name", "selector", "value", "exact", "enriched_dofs", "rotation", "value_array"});
       DirichletCondition d;
       d.name = optional_name(c);
       d.selector = parse_selector(c.at("selector"));
+      if (c.has("value") + c.has("exact") + c.has("rotation") + c.has("value_array") != 1)
+        c.fail("must have exactly one of value, exact, rotation, value_array");
+      if (c.has("enriched_dofs") && !c.has("exact")) c.at("enriched_dofs").fail("applies to an exact condition only");
+      if (c.has("rotation")) {
+        d.rotation = parse_rotation(c.at("rotation"));
+        p.dirichlet.push_back(d);
+        continue;
+      }
+      if (c.has("value_array")) {
+        d.value_array = c.at("value_array").string();
+        if (d.value_array.empty()) c.at("value_array").fail("must name a point array of the mesh");
+        p.dirichlet.push_back(d);
+        continue;
+      }
       if (c.has("exact")) {
-        if (c.has("value")) c.fail("must have one of value, exact, not both");
         d.exact = parse_exact(c.at("exact"), std::make_pair(p.E, p.nu));
         if (c.has("enriched_dofs")) {
           const Node e = c.at("enriched_dofs");
@@ -258,7 +282,6 @@ Problem parse_problem(const Json& j, const std::string& file) {
         p.dirichlet.push_back(d);
         continue;
       }
-      if (c.has("enriched_dofs")) c.at("enriched_dofs").fail("applies to an exact condition only");
       const Node value = c.at("value");
       if (!value.j.is_array() || value.j.size() != 3) value.fail("must be a list of 3 numbers or nulls");
       bool any = false;

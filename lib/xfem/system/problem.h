@@ -25,15 +25,31 @@ struct Selector {
                       ///< its nodes are where the point array group_<name> is nonzero (boundary_groups.h)
 };
 
+/// A finite rigid motion prescribed node by node (problem.json "rotation"): the node at X moves
+/// to R (X - centre) + centre + translation, R the rotation by `angle` about `axis`.
+struct PrescribedRotation {
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< unit vector
+  double angle = 0.0;                               ///< radians
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+};
+
 /// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
 /// enriched DOFs stay free). A missing (null) component is left free.
-/// With `exact` set instead of `value`, every selected node gets the exact field's displacement
-/// at the node, on the node's own side of the cut (array `side`; docs/FORMATS.md "problem.json").
+/// Exactly one of `value`, `exact`, `rotation`, `value_array` says what each selected node gets:
+/// the constant `value`; the exact field's displacement at the node, on the node's own side of
+/// the cut (array `side`); the rigid motion `rotation`'s displacement at the node; the node's
+/// tuple of the 3-component point array `value_array` (docs/FORMATS.md "problem.json"). The last
+/// three fix every component.
 struct DirichletCondition {
   std::string name;  ///< optional, for messages
   Selector selector;
   std::array<std::optional<double>, 3> value;  ///< metres
   std::optional<ExactField> exact;             ///< the exact field prescribed instead of `value`
+  std::optional<PrescribedRotation> rotation;  ///< the rigid motion prescribed instead of `value`
+  std::string value_array;                     ///< non-empty: the point array prescribed instead of `value`
+  /// Whether the condition fixes component i (0, 1, 2 = x, y, z) of its nodes.
+  bool fixes(int i) const { return exact || rotation || !value_array.empty() || value[static_cast<std::size_t>(i)]; }
   /// With `exact`: also prescribe the 4 branch DOF vectors of selected branch-enriched nodes
   /// (the field's crack-tip coefficients, WilliamsField::branch_coefficients) and shift the
   /// original DOF so that the discrete field equals the exact one at the node. false: the

@@ -58,7 +58,7 @@ DirichletGroups dirichlet_groups(const TetMesh& mesh, const Problem& problem) {
     std::vector<long> dofs;
     for (int k : select_nodes(d.selector, mesh, describe(problem, "dirichlet", c)))
       for (int i = 0; i < 3; ++i)
-        if ((d.exact || d.value[i]) && taken.insert(3L * k + i).second) dofs.push_back(3L * k + i);
+        if (d.fixes(i) && taken.insert(3L * k + i).second) dofs.push_back(3L * k + i);
     g.dofs.push_back(std::move(dofs));  // select_nodes returns increasing ids: dofs increase
   }
   return g;
