@@ -13,6 +13,7 @@
 #include "xfem/system/problem.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/system/integration_cost.h"
+#include "xfem/system/solution_provenance.h"
 #include "xfem/system/reactions.h"
 #include "xfem/core/version.h"
 
@@ -110,10 +111,7 @@ int main(int argc, char** argv) {
     const double write_start = xfem::cli::now();
     // What the system was made from, so that xfem-solve can record it in u.mtx and later stages
     // can check the solution against the mesh, cut and problem they are given.
-    xfem::Provenance provenance{{"enriched", xfem::fingerprint(em.mesh)},
-                                {"problem", xfem::fingerprint_json_file(problem_path)}};
-    if (em.cut) provenance["cut"] = xfem::fingerprint(em.cut->mesh());
-    for (std::size_t k = 1; k < em.cuts.size(); ++k) provenance["cut_" + std::to_string(k)] = xfem::fingerprint(em.cuts[k].cut->mesh());
+    const xfem::Provenance provenance = xfem::solution_provenance(em, problem_path);
     const std::string provenance_path = (std::filesystem::path(output) / "provenance.json").string();
     xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version,
                               format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc);

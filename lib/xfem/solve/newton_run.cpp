@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/solve/newton_run.h"
+
+#include <chrono>
+
+#include "xfem/core/cli.h"
+#include "xfem/core/error.h"
+#include "xfem/core/seconds_since.h"
+#include "xfem/io/matrix_market.h"
+#include "xfem/solve/newton.h"
+#include "xfem/system/assembly.h"
+#include "xfem/system/dirichlet_data.h"
+#include "xfem/system/pieces.h"
+#include "xfem/system/reactions.h"
+#include "xfem/system/solution_provenance.h"
+
+namespace xfem {
+
+namespace {
+
+Json steps_json(const std::vector<LoadStep>& steps) {
+  Json out = Json::array();
+  for (const LoadStep& s : steps) {
+    Json residuals = Json::array(), lengths = Json::array();
+    for (const NewtonIteration& it : s.iterations) {
+      residuals.push_back(it.residual);
+      lengths.push_back(it.step);
+    }
+    out.push_back({{"load", s.load},
+                   {"converged", s.converged},
+                   {"iterations", static_cast<long>(s.iterations.size()) - 1},
+                   {"relative_residuals", residuals},
+                   {"line_search_steps", lengths},
+                   {"assemble_seconds", s.assemble_seconds},
+                   {"factor_seconds", s.factor_seconds}});
+  }
+  return out;
+}
+
+void require_constrained_pieces(const EnrichedMesh& em, const Problem& problem, const std::vector<long>& fixed) {
+  std::vector<char> node_constrained(em.mesh.points.rows(), 0);
+  for (long dof : fixed)
+    if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
+  const std::vector<Piece> pieces = find_pieces(em, node_constrained);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    if (!pieces[i].constrained)
+      throw Error(problem.file + ": piece " + std::to_string(i + 1) + " of " + std::to_string(pieces.size()) + " (" +
+                  std::to_string(pieces[i].tets) + " tets) has no Dirichlet condition: it can move rigidly");
+}
+
+}  // namespace
+
+void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun& run, Json& report) {
+  if (problem.rule != Problem::Rule::Conforming)
+    throw Error(problem.file + ": xfem-newton integrates with the conforming rule only (integration.rule \"conforming\", "
+                "the default)");
+  const MaterialLaw law{problem.model, lame(problem.E, problem.nu)};
+  auto clock = std::chrono::steady_clock::now();
+  NonlinearProblem p;
+  p.em = &em;
+  p.law = law;
+  p.f = load_vector(em, problem);
+  p.dirichlet = [&](double s, std::vector<long>& fixed, std::vector<double>& values) {
+    dirichlet_data(em, problem, fixed, values, s);
+  };
+  {
+    std::vector<long> fixed;
+    std::vector<double> values;
+    p.dirichlet(1.0, fixed, values);
+    require_constrained_pieces(em, problem, fixed);
+  }
+  const BodyIntegration body = integrate_body(em, problem.order);
+  p.body = &body;
+  const double integrate_seconds = seconds_since(clock);
+  cli::info(std::string("material ") + material_model_name(problem.model) + ", " + std::to_string(body.points) +
+            " integration points in " + std::to_string(em.tets()) + " tets (" + cli::three_digits(integrate_seconds) +
+            " s), " + std::to_string(problem.load_steps) + " load step(s)");
+  NewtonOptions o;
+  o.load_steps = problem.load_steps;
+  o.max_iterations = run.max_iterations;
+  o.rtol = run.rtol;
+  o.ordering = run.ordering;
+  o.info = [](const std::string& m) { cli::info(m); };
+  o.detail = [](const std::string& m) { cli::detail(m); };
+  clock = std::chrono::steady_clock::now();
+  const NewtonResult result = solve_newton(p, o);
+  const double solve_seconds = seconds_since(clock);
+  if (!result.u.allFinite()) throw Error(problem.file + ": the solution is not finite; no output written");
+
+  // Reactions: r(u) - f on the constrained DOFs, 0 on the free ones (the residual there).
+  Eigen::VectorXd reactions = Eigen::VectorXd::Zero(3 * em.n);
+  for (long d : result.fixed) reactions[d] = result.r[d] - p.f[d];
+  // Forces balance in the deformed body: moments about the origin at the nodes' current places.
+  Eigen::MatrixXd coordinates = em.mesh.points;
+  for (long k = 0; k < em.np; ++k) coordinates.row(k) += result.u.segment<3>(3 * k).transpose();
+  const std::vector<Resultant> conditions =
+      condition_reactions(dirichlet_groups(em.mesh, problem), reactions, coordinates);
+  for (const Resultant& r : conditions) cli::info(describe_reaction(r, true));
+  long iterations = 0;
+  for (const LoadStep& s : result.steps) iterations += static_cast<long>(s.iterations.size()) - 1;
+  report["n"] = em.n;
+  report["dofs"] = 3 * em.n;
+  report["fixed_dofs"] = static_cast<long>(result.fixed.size());
+  report["material_model"] = material_model_name(problem.model);
+  report["load_steps"] = problem.load_steps;
+  report["integration_points"] = body.points;
+  report["newton_iterations"] = iterations;
+  report["factorizations"] = result.factorizations;
+  report["steps"] = steps_json(result.steps);
+  report["relative_residual"] = result.steps.back().final_residual;
+  report["strain_energy"] = result.energy;
+  report["min_det_F"] = result.min_J;
+  report["reactions"] = reactions_json(conditions, applied_load(p.f, coordinates), true);
+  report["integrate_seconds"] = integrate_seconds;
+  report["analyze_seconds"] = result.analyze_seconds;
+  report["solve_seconds"] = solve_seconds;
+  if (!run.reactions_path.empty()) write_vector(reactions, run.reactions_path);
+  write_vector(result.u, run.output, provenance_comments(solution_provenance(em, run.problem_path)));
+  if (!run.report_path.empty()) write_json(report, run.report_path);
+}
+
+}  // namespace xfem

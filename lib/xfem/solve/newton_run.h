@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <string>
+
+#include "xfem/core/json_io.h"
+#include "xfem/enrich/enriched_mesh.h"
+#include "xfem/system/problem.h"
+
+namespace xfem {
+
+/// What xfem-newton is asked for: its outputs and the Newton settings beyond problem.json.
+struct NewtonRun {
+  std::string problem_path;    ///< problem.json, for the fingerprint u.mtx carries
+  std::string output;          ///< u.mtx
+  std::string reactions_path;  ///< nodal reactions (.mtx); empty: not written
+  std::string report_path;     ///< the JSON report; empty: not written
+  std::string ordering = "metis";
+  double rtol = 1e-8;
+  int max_iterations = 25;
+};
+
+/// The large-deformation solve of `problem` on `em` (xfem-newton): the body integrated once with
+/// the cut-conforming rule of order problem.order, Newton in problem.load_steps load steps
+/// (newton.h), then the outputs xfem-solve writes: the reactions r(u) - f on the constrained
+/// DOFs (each condition's resultant logged and reported), u.mtx with the fingerprints of the
+/// mesh, the cuts and the problem, and the report (the steps with their residual histories,
+/// factorizations, timings). Progress on stderr per load step (cli::info) and per iteration
+/// (cli::detail). Throws xfem::Error, writing nothing, for the oversampling rule, a piece
+/// without a Dirichlet condition, or a Newton failure after the smallest step.
+void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun& run, Json& report);
+
+}  // namespace xfem
