@@ -90,6 +90,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"curvilinear", "uncorrected", "tangent"}));
   app.add_option("--order", options.order, "Gauss points per direction of the conforming rule (default 4)")
       ->check(CLI::Range(1, 20));
+  app.add_flag("--allow-large", options.allow_large, "run even when the front points, the evaluations of the weight "
+                                                     "or the integrand evaluations are estimated beyond their limits "
+                                                     "(1e5, 1e8, 3e8; docs/FORMATS.md \"front.csv\")");
   app.callback([&] {
     if (output.empty() && csv.empty() && png.empty()) throw CLI::RequiredError("-o, --csv or --png");
   });
@@ -97,16 +100,7 @@ int main(int argc, char** argv) {
     const xfem::Problem problem = xfem::read_problem(problem_path);
     std::vector<std::string> warnings;
     xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
-    if (!em.cuts.empty()) {  // several cuts: the front, classes and surface of cut --front-of
-      if (front_of >= static_cast<int>(em.cuts.size()))
-        throw xfem::Error(input + ": --front-of " + std::to_string(front_of) + " but the mesh has " +
-                          std::to_string(em.cuts.size()) + " cuts (0.." + std::to_string(em.cuts.size() - 1) + ")");
-      em.front = em.cuts[front_of].front;
-      em.cut_class = em.cuts[front_of].cut_class;
-      em.cut = em.cuts[front_of].cut;
-    } else if (front_of != 0) {
-      throw xfem::Error(input + ": --front-of " + std::to_string(front_of) + " but the mesh has one cut");
-    }
+    xfem::select_front_of(em, front_of, input);
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");
     const Eigen::VectorXd u = xfem::read_vector(solution);
@@ -126,10 +120,9 @@ int main(int argc, char** argv) {
       xfem::cli::warn("the domains of " + std::to_string(reaching) + " of " + std::to_string(points.size()) +
                       " front points reach the body's surface away from the front's ends: their K miss a surface "
                       "term and may be wrong; reduce --radius (now " + std::to_string(R) + " m)");
+    xfem::check_front_finite(points, solution);
     double kmin = 0, kmax = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!std::isfinite(points[i].K1) || !std::isfinite(points[i].K2) || !std::isfinite(points[i].K3))
-        throw xfem::Error(input + ": non-finite stress intensity factor at arc length " + std::to_string(points[i].s));
       kmin = i == 0 ? points[i].K1 : std::min(kmin, points[i].K1);
       kmax = i == 0 ? points[i].K1 : std::max(kmax, points[i].K1);
     }

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "xfem/generate/box_mesh.h"
@@ -11,6 +12,7 @@
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
 #include "xfem/fracture/exact_fields.h"
+#include "xfem/fracture/front_cost.h"
 
 namespace {
 
@@ -221,4 +223,55 @@ TEST_CASE("stress_intensity: bad input", "[stress_intensity]") {
   no_front.front = xfem::CrackFront();
   CHECK_THROWS_WITH(xfem::front_stress_intensity(no_front, Eigen::VectorXd::Zero(3 * em.n), 1, 0.3, g, {}),
                     Catch::Contains("no front"));
+}
+
+TEST_CASE("stress_intensity: the cost estimate counts the front points computed; beyond the limits refused",
+          "[stress_intensity]") {
+  const auto cut = straight_cut();
+  const xfem::EnrichedMesh em = enriched_box(4, cut, 10.0);
+  const Eigen::VectorXd u = williams_vector(em, field(1, 0, 0));
+  const std::vector<xfem::FrontPolyline> chains = xfem::front_polylines(em.front);
+  std::vector<std::vector<double>> rho(chains.size(), std::vector<double>(em.mesh.points.rows()));
+  for (std::size_t p = 0; p < chains.size(); ++p)
+    for (long n = 0; n < em.mesh.points.rows(); ++n) {
+      double s;
+      chains[p].closest(em.mesh.points.row(n).transpose(), s, rho[p][n]);
+    }
+  for (double spacing : {0.25, 0.3, 0.5, 1.0}) {
+    xfem::FrontSifOptions o;
+    o.radius = 0.3;
+    o.spacing = spacing;
+    const auto pts = xfem::front_stress_intensity(em, u, 2.0, 0.3, Eigen::Vector3d::Zero(), o);
+    const xfem::FrontCost cost = xfem::front_cost(em, chains, rho, o.radius, spacing, o.order);
+    INFO("spacing " << spacing);
+    CHECK(cost.points == static_cast<double>(pts.size()));
+    CHECK(cost.integration_points > 0);
+    CHECK_NOTHROW(xfem::check_front_cost(cost, false));
+  }
+  // A spacing of 1e-8 m: 1e8 front points, refused before any is made (it ran out of memory).
+  xfem::FrontSifOptions tiny;
+  tiny.radius = 0.3;
+  tiny.spacing = 1e-8;
+  CHECK_THROWS_WITH(xfem::front_stress_intensity(em, u, 2.0, 0.3, Eigen::Vector3d::Zero(), tiny),
+                    Catch::Contains("about 1e+08 front points") && Catch::Contains("--allow-large"));
+  const xfem::FrontCost huge = xfem::front_cost(em, chains, rho, 0.3, 1e-8, 4);
+  CHECK_NOTHROW(xfem::check_front_cost(huge, true));
+  // Order 20 keeps 8000 points per sub-tet: refused by its integration points alone.
+  const xfem::FrontCost high = xfem::front_cost(em, chains, rho, 0.3, 0.25, 20);
+  CHECK(high.points <= xfem::kMaxFrontPoints);
+  CHECK(high.integration_points > xfem::kMaxFrontIntegrationPoints);
+  CHECK_THROWS_WITH(xfem::check_front_cost(high, false), Catch::Contains("integration points"));
+}
+
+TEST_CASE("stress_intensity: a value that is not finite is refused, naming the solution", "[stress_intensity]") {
+  std::vector<xfem::FrontSif> pts(2);
+  for (auto& p : pts) p.x = p.a = p.b = p.c = Eigen::Vector3d::Zero();
+  pts[1].s = 0.5;
+  CHECK_NOTHROW(xfem::check_front_finite(pts, "u.mtx"));
+  pts[1].G = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_WITH(xfem::check_front_finite(pts, "u.mtx"), Catch::StartsWith("u.mtx: G = inf at the front point at "
+                                                                                "arc length 0.500000 of chain 0"));
+  pts[1].G = 0;
+  pts[0].K2 = std::nan("");
+  CHECK_THROWS_WITH(xfem::check_front_finite(pts, "u.mtx"), Catch::StartsWith("u.mtx: K_II = nan"));
 }

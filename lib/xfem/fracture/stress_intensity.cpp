@@ -15,12 +15,27 @@
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/element_stiffness.h"
 #include "xfem/enrich/enriched_basis.h"
+#include "xfem/enrich/side_codes.h"
 #include "xfem/core/error.h"
 #include "xfem/fracture/exact_fields.h"
+#include "xfem/fracture/front_cost.h"
 #include "xfem/geometry/point_location.h"
 #include "xfem/geometry/tet_shape.h"
 
 namespace xfem {
+
+void select_front_of(EnrichedMesh& em, int k, const std::string& input) {
+  if (em.cuts.empty()) {
+    if (k != 0) throw Error(input + ": --front-of " + std::to_string(k) + " but the mesh has one cut");
+    return;
+  }
+  if (k < 0 || k >= static_cast<int>(em.cuts.size()))
+    throw Error(input + ": --front-of " + std::to_string(k) + " but the mesh has " + std::to_string(em.cuts.size()) +
+                " cuts (0.." + std::to_string(em.cuts.size() - 1) + ")");
+  em.front = em.cuts[k].front;
+  em.cut_class = em.cuts[k].cut_class;
+  em.cut = em.cuts[k].cut;
+}
 
 double default_domain_radius(const EnrichedMesh& em) {
   double sum = 0.0;
@@ -68,6 +83,24 @@ const std::array<std::array<double, 4>, 7>& triangle_rule() {
   return r;
 }
 
+// With several cuts: the index of em.cut, the cut whose front is evaluated, in em.cuts; -1 for one cut.
+int evaluated_cut(const EnrichedMesh& em) {
+  if (em.cuts.empty()) return -1;
+  for (std::size_t k = 0; k < em.cuts.size(); ++k)
+    if (em.cuts[k].cut == em.cut) return static_cast<int>(k);
+  throw Error("the evaluated cut is not one of the mesh's cuts (select it with select_front_of)");
+}
+
+// The side code (side_codes.h) of a point x off the integration rule (a surface point of the domain
+// form): its side of every cut, `side` for the evaluated cut (that of the auxiliary fields), a point
+// on another cut's surface taken on its + side.
+int side_code_at(const EnrichedMesh& em, int evaluated, int side, const Eigen::Vector3d& x) {
+  int sides[kMaxCuts];
+  for (std::size_t k = 0; k < em.cuts.size(); ++k)
+    sides[k] = static_cast<int>(k) == evaluated ? side : em.cuts[k].cut->side(x) < 0 ? -1 : 1;
+  return pack_sides(sides, static_cast<int>(em.cuts.size()));
+}
+
 // The integration points of one tet and the solution's gradient at each, computed once: the
 // domains of neighbouring front points overlap.
 struct TetPoints {
@@ -100,6 +133,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
   const TetMesh& mesh = em.mesh;
   const long np = mesh.points.rows();
   const CutElementSplits splits = split_cut_elements(em);
+  const int evaluated = evaluated_cut(em);
   const PointLocator locator(mesh);
   std::unordered_map<int, TetPoints> cache;
   const auto points_of = [&](int t) -> const TetPoints& {
@@ -110,15 +144,26 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
     for (int k = 0; k < tp.rule.size(); ++k) {
       int side = tp.rule.side[k];
       if (side == 0 && em.cut && em.cuts.empty()) side = em.cut->side(tp.rule.x[k]);  // several cuts: 0 = decide by all
-      tp.rule.side[k] = side;
       tp.grad_u.push_back(grad_u(t, tp.rule.x[k], side));
       // Several cuts: that side is a side code (side_codes.h); the auxiliary fields want the
-      // point's side of em.cut, the cut whose front is evaluated.
-      if (!em.cuts.empty()) tp.rule.side[k] = em.cut ? em.cut->side(tp.rule.x[k]) : 0;
+      // point's side of the evaluated cut, the one the code holds (or, for code 0, its surface's).
+      tp.rule.side[k] = evaluated < 0 ? side : side >= 2 ? code_side(side, evaluated) : em.cut->side(tp.rule.x[k]);
       tp.sigma.push_back(stress(tp.grad_u.back(), lm));
     }
     return cache.emplace(t, std::move(tp)).first->second;
   };
+
+  // Each node's closest point on each chain.
+  std::vector<std::vector<double>> node_s(chains.size()), node_rho(chains.size());
+  for (std::size_t p = 0; p < chains.size(); ++p) {
+    node_s[p].resize(np);
+    node_rho[p].resize(np);
+    for (long k = 0; k < np; ++k) chains[p].closest(mesh.points.row(k).transpose(), node_s[p][k], node_rho[p][k]);
+  }
+
+  // The cost guard (front_cost.h), before any of the work it estimates.
+  const FrontCost cost = front_cost(em, chains, node_rho, R, options.spacing, options.order);
+  check_front_cost(cost, options.allow_large);
 
   // Front points: evenly spaced along each chain, both ends of an open chain included.
   std::vector<FrontSif> out;
@@ -140,14 +185,6 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       out.push_back(f);
       halfwidth.push_back(d);
     }
-  }
-
-  // Each node's closest point on each chain.
-  std::vector<std::vector<double>> node_s(chains.size()), node_rho(chains.size());
-  for (std::size_t p = 0; p < chains.size(); ++p) {
-    node_s[p].resize(np);
-    node_rho[p].resize(np);
-    for (long k = 0; k < np; ++k) chains[p].closest(mesh.points.row(k).transpose(), node_s[p][k], node_rho[p][k]);
   }
 
   // Nodes on the body's surface (on a face of one tet only): a domain reaching them away from the
@@ -400,7 +437,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
           if (!aux_at(x, side, ax, cx, kh, F)) continue;
           Eigen::Matrix3d Rx;
           Rx << ax, nrm, cx;
-          const Eigen::Matrix3d Gu = grad_u(sf.tet, x, side);
+          const Eigen::Matrix3d Gu = grad_u(sf.tet, x, evaluated < 0 ? side : side_code_at(em, evaluated, side, x));
           const Eigen::Matrix3d S = stress(Gu, lm);
           const Eigen::Vector3d Sn = S * sf.normal, Gu_a = Gu * ax;
           for (int m = 0; m < 3; ++m) {
@@ -442,6 +479,22 @@ void write_text(const std::string& path, const std::function<void(std::ostream&)
 }
 
 }  // namespace
+
+void check_front_finite(const std::vector<FrontSif>& points, const std::string& solution) {
+  for (const FrontSif& p : points) {
+    const std::pair<const char*, double> values[] = {{"K_I", p.K1}, {"K_II", p.K2}, {"K_III", p.K3}, {"G", p.G},
+                                                     {"the arc length", p.s}, {"x", p.x[0]}, {"y", p.x[1]},
+                                                     {"z", p.x[2]}};
+    for (const auto& [name, v] : values)
+      if (!std::isfinite(v)) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", v);
+        throw Error(solution + ": " + name + " = " + value + " at the front point at arc length " +
+                    std::to_string(p.s) + " of chain " + std::to_string(p.chain) +
+                    ": not a finite number (are the solution's values, or E, far too large?)");
+      }
+  }
+}
 
 void write_front_vtp(const std::vector<FrontSif>& points, const std::string& path) {
   write_text(path, [&](std::ostream& os) {

@@ -74,6 +74,8 @@ struct FrontSifOptions {
   /// body's faces where q > 0 (on a free face: -q (sigma^aux n).(grad u a), the plane-strain auxiliary
   /// field not being traction-free there); false: leave it out (before issue 15's second session).
   bool surface_term = true;
+  /// Run even when the cost estimate (front_cost.h) exceeds its limits (--allow-large).
+  bool allow_large = false;
 };
 
 /// One evaluation point on the front.
@@ -92,6 +94,11 @@ struct FrontSif {
   /// (reduce the radius).
   bool reaches_surface = false;
 };
+
+/// Several cuts: makes cut k's front, classes and surface em's own (em.front, em.cut_class, em.cut:
+/// those front_stress_intensity evaluates). One cut: k must be 0. Throws xfem::Error naming `input`
+/// for a cut the mesh does not have.
+void select_front_of(EnrichedMesh& em, int k, const std::string& input);
 
 /// The default domain radius: 2.5 x the mean edge length of the partially cut tets (those the
 /// front crosses). Throws xfem::Error when there are none.
@@ -112,6 +119,11 @@ using DisplacementGradient = std::function<Eigen::Matrix3d(int t, const Eigen::V
 std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const DisplacementGradient& grad_u, double E,
                                              double nu, const Eigen::Vector3d& body, const FrontSifOptions& options,
                                              const std::function<void(double)>& progress = {});
+
+/// Every value the outputs hold (position, arc length, K_I, K_II, K_III, G) finite, else xfem::Error
+/// "<solution>: G = inf at front point s = ... of chain ...: ..." (a solution of 1e200 m gives
+/// finite K whose squares overflow G).
+void check_front_finite(const std::vector<FrontSif>& points, const std::string& solution);
 
 /// Writes the points as a VTK XML polydata (one polyline per chain, point arrays K_I, K_II, K_III
 /// and G, SI units; docs/FORMATS.md "front.vtp") and as CSV (docs/FORMATS.md "front.csv").

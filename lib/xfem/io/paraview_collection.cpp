@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/io/paraview_collection.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -10,6 +11,8 @@
 namespace xfem {
 
 void write_paraview_collection(const std::vector<CollectionEntry>& entries, const std::string& path) {
+  for (const auto& e : entries)
+    if (!std::isfinite(e.time)) throw Error(path + ": the time of " + e.file + " is not a finite number");
   write_atomically(path, [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

@@ -14,7 +14,8 @@ struct CollectionEntry {
 };
 
 /// Writes a ParaView data collection (.pvd: VTKFile type "Collection", one DataSet per entry;
-/// ParaView plays it as a time series, docs/FORMATS.md "sweep.pvd"), atomically.
+/// ParaView plays it as a time series, docs/FORMATS.md "sweep.pvd"), atomically. Throws
+/// xfem::Error for a time that is not finite (nothing written).
 void write_paraview_collection(const std::vector<CollectionEntry>& entries, const std::string& path);
 
 }  // namespace xfem

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/post/sweep_run.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -28,11 +30,26 @@ void check_options(const SweepOptions& o) {
                 "factorization for thousands of solves, which an iterative solver would pay for in full each "
                 "time; for a body too large for CHOLMOD run the tools per step with xfem-solve --backend petsc");
   if (o.steps < 1) throw Error("--steps " + std::to_string(o.steps) + ": the number of steps must be at least 1");
+  if (o.steps > kMaxSweepSteps && !o.allow_large)
+    throw Error("--steps " + std::to_string(o.steps) + ": " + std::to_string(o.steps) + " solves and " +
+                std::to_string(2L * o.steps) +
+                " frame files requested (limit " + std::to_string(kMaxSweepSteps) + " steps; fewer --steps, or --allow-large)");
   if (std::filesystem::exists(o.dir) && !std::filesystem::is_directory(o.dir))
     throw Error(o.dir + ": exists and is not a directory");
   if (!o.report_path.empty()) cli::check_output(o.report_path, {".json"}, true);
   if (o.png && (!std::getenv("DISPLAY") || !*std::getenv("DISPLAY")))
     throw Error("--png: rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
+}
+
+// The steps' times go into sweep.pvd and the report: times spanning more than double precision
+// holds (-1e308 to 1e308) make t1 - t0 overflow.
+void check_finite_times(const std::vector<double>& times, const std::vector<double>& t, const std::string& cut_path) {
+  const auto [lo, hi] = std::minmax_element(times.begin(), times.end());
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (!std::isfinite(t[k]))
+      throw Error(cut_path + ": the time of step " + std::to_string(k + 1) + " is not a finite number (cell array "
+                  "'time' from " + short_number(*lo) + " to " + short_number(*hi) +
+                  " s: the span overflows double precision; shift or scale the times)");
 }
 
 }  // namespace
@@ -47,6 +64,7 @@ void run_sweep(const SweepOptions& o) {
   for (const auto& w : warnings) cli::warn(w);
   const std::vector<double> times = cut_times(sweep, o.cut_path);
   const std::vector<double> t = step_times(times, steps);
+  check_finite_times(times, t, o.cut_path);
   const Problem problem = read_problem(o.problem_path);
   std::filesystem::create_directories(o.dir);
 

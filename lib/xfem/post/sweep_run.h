@@ -11,7 +11,13 @@ struct SweepOptions {
   int steps = 0, width = 1200, height = 900;
   double scale = 1.0;
   bool solutions = false, cuts = false, png = false;
+  bool allow_large = false;  ///< run even with more than kMaxSweepSteps steps
 };
+
+/// xfem-sweep's cost guard (the model of xfem-mesh's, generation_limits.h): each step is a solve
+/// and two frame files (more with --png, --solutions, --cuts), so more steps than this (hours,
+/// hundreds of thousands of files) are refused before any work unless --allow-large.
+constexpr int kMaxSweepSteps = 1000;
 
 /// xfem-sweep: checks the options, reads the body, the sweep and the problem, factorizes the
 /// uncut body once, solves the K steps (SweepSteps) and writes their frames (write_frame, in the
