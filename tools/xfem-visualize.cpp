@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
                                                   problem.nu, xfem::cli::progress("evaluating"), wound_offset, problem.model);
     const xfem::DeformedVolume volume = xfem::deformed_volume(body.volume, body.det_F);
     xfem::cli::info(xfem::describe(volume));
-    if (volume.inverted > 0) xfem::cli::warn(xfem::inverted_warning(volume, problem.model));
+    if (const std::string w = xfem::inverted_warning(volume, problem.model); !w.empty()) xfem::cli::warn(w);
     if (!reactions_path.empty()) body.volume.point_data["reaction"] = xfem::reaction_array(reactions, em.np, split.points.rows());
     if (em.cut && em.cuts.empty()) {  // several cuts: the pieces carry side codes, no +-1 pairs
       const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),

@@ -141,8 +141,14 @@ TEST_CASE("deformed_volume: the volume per side before and after, and the invert
   CHECK(v.inverted == 48);
   CHECK(v.undefined_stress == 48);
   CHECK(v.body.after == Approx(-1).epsilon(1e-14));
-  CHECK(xfem::inverted_warning(v, xfem::MaterialModel::Corotational).find("48 of 48 cells are inverted (48 with det F <= 0") == 0);
+  CHECK(xfem::inverted_warning(v, xfem::MaterialModel::Corotational).find("48 of 48 cells are inverted (det F <= 0 at the centroid)") == 0);
   for (double s : mirrored.volume.cell_data.at("von_mises").values) CHECK(s == 0);
+  // Flipped by the corners only (det F > 0 at the centroid, as a sliver can be): counted, no warning.
+  const xfem::DeformedVolume corners = xfem::deformed_volume(mirrored.volume, std::vector<double>(48, 0.5));
+  CHECK(corners.inverted == 48);
+  CHECK(corners.undefined_stress == 0);
+  CHECK(xfem::inverted_warning(corners, xfem::MaterialModel::Linear).empty());
+  CHECK(xfem::describe(corners).find("48 inverted cells (0 with det F <= 0 at the centroid, 48 slivers") != std::string::npos);
   // Without a cut (every piece_side 0) the report has the body only.
   xfem::TetMesh whole = mirrored.volume;
   for (double& s : whole.cell_data.at("piece_side").values) s = 0;

@@ -356,7 +356,7 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   overlay->AddActor2D(text("von Mises\nstress" + (model.empty() ? std::string() : "\n(Cauchy,\n" + o.stress_model + ")"),
                            x0, y1 + 0.04, font, VTK_TEXT_LEFT));
   std::string caption = o.title.empty() ? std::string() : o.title + "\n";
-  caption += "colour: von Mises stress" + model + ", 0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
+  caption += "colour: von Mises stress" + model + (model.empty() ? ", " : ",\n") + "0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
                                                                    : std::string(" (95th percentile of the cells; above: yellow)"));
   if (view.has_cut) caption += ", wound faces red";
   if (section) caption += "\nsection through the cut's centre, the half towards the viewer removed";

@@ -64,21 +64,20 @@ std::string describe(const DeformedVolume& v) {
   for (const auto& p : v.sides)
     s += std::string(p.side > 0 ? "; above the cut (piece_side +1) " : p.side < 0 ? "; below (-1) " : "; whole (0) ") +
          volumes(p);
-  return s + "; " + std::to_string(v.inverted) + " inverted cells (det F <= 0 or deformed volume <= 0)";
+  return s + "; " + std::to_string(v.inverted) + " inverted cells (" + std::to_string(v.undefined_stress) +
+         " with det F <= 0 at the centroid, " + std::to_string(v.inverted - v.undefined_stress) +
+         " slivers flipped by their moved corners only)";
 }
 
 std::string inverted_warning(const DeformedVolume& v, MaterialModel model) {
-  if (v.inverted == 0) return {};
-  const std::string n = std::to_string(v.inverted) + " of " + std::to_string(v.body.cells) + " cells are inverted (" +
-                        std::to_string(v.undefined_stress) + " with det F <= 0 at the centroid, " +
-                        std::to_string(v.inverted - v.undefined_stress) +
-                        " only by their moved corners, e.g. slivers of the split): the displacement turns them "
-                        "inside out; ";
+  if (v.undefined_stress == 0) return {};  // slivers flipped by their corners only: in the volume line
+  const std::string n = std::to_string(v.undefined_stress) + " of " + std::to_string(v.body.cells) +
+                        " cells are inverted (det F <= 0 at the centroid): the displacement turns them inside out; ";
   if (model == MaterialModel::Linear)
     return n + "the small-strain model does not hold there (its Hooke stress is shown unchanged); for large motions "
                "solve with xfem-newton and material.model \"corotational\" or \"neo-hookean\"";
-  return n + "not a physical state; the Cauchy stress P F^T / det F is undefined where det F <= 0: stress and "
-             "von_mises hold 0 there";
+  return n + "not a physical state; the Cauchy stress P F^T / det F is undefined there: their stress and "
+             "von_mises hold 0";
 }
 
 }  // namespace xfem

@@ -30,11 +30,14 @@ struct DeformedVolume {
 DeformedVolume deformed_volume(const TetMesh& deformed, const std::vector<double>& det_F);
 
 /// One line for the report: "volume 0.00036 m^3 -> 0.00036 m^3 (relative change +1.2e-16); above
-/// the cut (piece_side +1) ... ; 0 inverted cells".
+/// the cut (piece_side +1) ... ; 0 inverted cells (0 with det F <= 0 at the centroid, 0 slivers
+/// flipped by their moved corners only)".
 std::string describe(const DeformedVolume& v);
 
-/// The warning for inverted cells (empty when there are none): how many and what it means for
-/// `model`'s stress arrays.
+/// The warning for the cells with det F <= 0 (empty when there are none): how many and what it
+/// means for `model`'s stress arrays. Slivers of a split element flipped by their moved corners
+/// (det F > 0 at the centroid: a thin piece whose corners' displacement differs by more than its
+/// thickness) are counted in describe() only: their stress is defined.
 std::string inverted_warning(const DeformedVolume& v, MaterialModel model);
 
 }  // namespace xfem
