@@ -5,6 +5,7 @@
 
 #include "xfem/core/cli.h"
 #include "xfem/post/deformed_mesh.h"
+#include "xfem/post/deformed_volume.h"
 #include "xfem/geometry/element_split.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/core/error.h"
@@ -22,8 +23,8 @@ int main(int argc, char** argv) {
       "xfem-visualize",
       "Write the deformed body with the cut opened: every cut element split along the cut into its\n"
       "parts above and below (ahead of the cut front it stays joined), each part moved by the X-FEM\n"
-      "displacement of its own side; with strain, stress (Pa) and von Mises stress (Pa) per cell\n"
-      "(docs/FORMATS.md: deformed.vtu, wound.vtp, PNG snapshot). Positions are undeformed (m): apply\n"
+      "displacement of its own side; with strain, stress (Pa; Cauchy for a material.model other than linear) and\n"
+      "von Mises stress (Pa) per cell (docs/FORMATS.md: deformed.vtu, wound.vtp, PNG snapshot). Positions are undeformed (m): apply\n"
       "ParaView's Warp By Vector with 'displacement' (m) to see the deformation. Without --cut the mesh\n"
       "is shown as it is (plain CG-FEM meshes, doubled nodes included).",
       "xvfb-run -a xfem-visualize enriched.vtu --cut cut.vtp --solution u.mtx --problem problem.json \\\n"
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
                                         "to xfem-classify")
       ->allow_extra_args(false);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
-  app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, for the stresses)")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, model, for the stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
   app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp, or .vtu: a grid of triangles)");
   app.add_option("--reactions", reactions_path, "xfem-solve --reactions output (3N x 1, N): written as the point "
@@ -113,7 +114,10 @@ int main(int argc, char** argv) {
       xfem::cli::warn(std::to_string(split.degenerate_faces) + " faces with one split edge but no front point: "
                       "split at that edge only (the cut grazes a node or the front misses the face)");
     xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
-                                                  problem.nu, xfem::cli::progress("evaluating"), wound_offset);
+                                                  problem.nu, xfem::cli::progress("evaluating"), wound_offset, problem.model);
+    const xfem::DeformedVolume volume = xfem::deformed_volume(body.volume, body.det_F);
+    xfem::cli::info(xfem::describe(volume));
+    if (const std::string w = xfem::inverted_warning(volume, problem.model); !w.empty()) xfem::cli::warn(w);
     if (!reactions_path.empty()) body.volume.point_data["reaction"] = xfem::reaction_array(reactions, em.np, split.points.rows());
     if (em.cut && em.cuts.empty()) {  // several cuts: the pieces carry side codes, no +-1 pairs
       const auto opening = xfem::cut_opening(split, body.volume.point_data.at("displacement"),
@@ -130,6 +134,7 @@ int main(int argc, char** argv) {
     o.width = width;
     o.height = height;
     o.title = title.empty() ? output : title;
+    if (problem.model != xfem::MaterialModel::Linear) o.stress_model = xfem::material_model_name(problem.model);
     o.edges = no_edges || edges == "off" ? xfem::SnapshotOptions::Edges::Off
               : edges == "on"            ? xfem::SnapshotOptions::Edges::On
                                          : xfem::SnapshotOptions::Edges::Auto;

@@ -352,9 +352,11 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   overlay->AddActor2D(text(pascals(0.0), x1 + 0.05, y0 - 0.01, font, VTK_TEXT_LEFT));
   overlay->AddActor2D(text(pascals(top / 2), x1 + 0.05, (y0 + y1) / 2 - 0.01, font, VTK_TEXT_LEFT));
   overlay->AddActor2D(text(">= " + pascals(top), x1 + 0.05, y1 - 0.01, font, VTK_TEXT_LEFT));
-  overlay->AddActor2D(text("von Mises\nstress", x0, y1 + 0.04, font, VTK_TEXT_LEFT));
+  const std::string model = o.stress_model.empty() ? std::string() : " (Cauchy, " + o.stress_model + ")";
+  overlay->AddActor2D(text("von Mises\nstress" + (model.empty() ? std::string() : "\n(Cauchy,\n" + o.stress_model + ")"),
+                           x0, y1 + 0.04, font, VTK_TEXT_LEFT));
   std::string caption = o.title.empty() ? std::string() : o.title + "\n";
-  caption += "colour: von Mises stress, 0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
+  caption += "colour: von Mises stress" + model + (model.empty() ? ", " : ",\n") + "0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
                                                                    : std::string(" (95th percentile of the cells; above: yellow)"));
   if (view.has_cut) caption += ", wound faces red";
   if (section) caption += "\nsection through the cut's centre, the half towards the viewer removed";

@@ -38,6 +38,9 @@ struct SnapshotOptions {
   int width = 1200;       ///< pixels
   int height = 900;       ///< pixels
   std::string title;      ///< first line of the caption (e.g. the file name); may be empty
+  /// The material model the von_mises array was computed with, for the colour bar and caption
+  /// ("von Mises stress (Cauchy, neo-hookean)"); empty: the linear model's (Hooke) stress.
+  std::string stress_model;
   /// Element edges: Auto draws thin light-grey edges when the visible surface has fewer than
   /// 20,000 triangles (a finer mesh would turn grey), On / Off always / never.
   enum class Edges { Auto, On, Off };

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "xfem/integrate/element_stiffness.h"
+#include "xfem/post/cell_stress.h"
 #include "xfem/enrich/enriched_basis.h"
 #include "xfem/core/error.h"
 #include "xfem/core/parallel_for.h"
@@ -34,11 +35,11 @@ double von_mises(const Eigen::Matrix3d& s) {
 }
 
 DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
-                           double E, double nu, const std::function<void(double)>& progress, double wound_offset) {
+                           double E, double nu, const std::function<void(double)>& progress, double wound_offset,
+                           MaterialModel model) {
   if (!(E > 0)) throw Error("deformed_body: Young's modulus E must be positive, got " + std::to_string(E));
   if (!(nu > -1 && nu < 0.5)) throw Error("deformed_body: Poisson's ratio nu must be in (-1, 0.5), got " + std::to_string(nu));
-  const Lame lm = lame(E, nu);
-  const double lambda = lm.lambda, mu = lm.mu;
+  const MaterialLaw law{model, lame(E, nu)};
   const Eigen::Index np = split.points.rows(), nt = split.tets.rows();
 
   DeformedBody out;
@@ -63,6 +64,7 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
       throw Error("deformed_body: displacement at point " + std::to_string(k) + " (in tet " +
                   std::to_string(split.point_tet[k]) + ") is not finite");
 
+  out.det_F.assign(static_cast<std::size_t>(nt), 1.0);
   DataArray cls = make_array(DataArray::Type::Int32, 1, nt), side = make_array(DataArray::Type::Int32, 1, nt),
             parent = make_array(DataArray::Type::Int64, 1, nt), strain = make_array(DataArray::Type::Float64, 6, nt),
             stress = make_array(DataArray::Type::Float64, 6, nt), vm = make_array(DataArray::Type::Float64, 1, nt);
@@ -71,16 +73,15 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
       Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
       for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
       const int p = split.parent[t];
-      const Eigen::Matrix3d G = u.gradient(p, centroid, split.tet_side[t]);
-      const Eigen::Matrix3d eps = 0.5 * (G + G.transpose());
-      const Eigen::Matrix3d sigma = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2 * mu * eps;
+      const CellStress cs = cell_stress(law, u.gradient(p, centroid, split.tet_side[t]));
       // VTK's order of a symmetric tensor's 6 components (as ParaView reads them).
       static const int kI[6] = {0, 1, 2, 0, 1, 0}, kJ[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; ++c) {
-        strain.values[6 * t + c] = eps(kI[c], kJ[c]);
-        stress.values[6 * t + c] = sigma(kI[c], kJ[c]);
+        strain.values[6 * t + c] = cs.strain(kI[c], kJ[c]);
+        stress.values[6 * t + c] = cs.stress(kI[c], kJ[c]);
       }
-      vm.values[t] = von_mises(sigma);
+      vm.values[t] = von_mises(cs.stress);
+      out.det_F[t] = cs.det_F;
       cls.values[t] = cut_class[p];
       side.values[t] = split.tet_side[t];
       parent.values[t] = p;

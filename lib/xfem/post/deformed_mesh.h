@@ -5,6 +5,7 @@
 
 #include "xfem/geometry/element_split.h"
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/integrate/material_law.h"
 
 namespace xfem {
 
@@ -27,8 +28,12 @@ struct DeformedBody {
   /// front), `parent` (Int64, input tet), `strain` (Float64 x 6: xx, yy, zz, xy, yz, xz, the
   /// symmetric small-strain tensor, dimensionless), `stress` (Float64 x 6, same order, Pa) and
   /// `von_mises` (Float64, Pa). Strain and stress are the X-FEM field's at the cell's centroid, on
-  /// the cell's side.
+  /// the cell's side; for a material model other than linear, the Green-Lagrange strain and the
+  /// Cauchy stress (cell_stress.h).
   TetMesh volume;
+  /// det F = det(I + grad u) per cell of `volume`, at its centroid (not written: deformed_volume.h
+  /// counts the inverted cells with it).
+  std::vector<double> det_F;
   /// The wound: both faces of the cut inside the body, point array `displacement`, cell array
   /// `side` (Int32 +1 / -1).
   TriangleMesh wound;
@@ -36,7 +41,8 @@ struct DeformedBody {
 
 /// Evaluates `u` on the split mesh: every point copy with its own side, so the two faces of the
 /// cut move apart by the solution's jump. E (Pa) > 0 and nu in (-1, 0.5) give the stress
-/// (Hooke: sigma = lambda tr(eps) I + 2 mu eps, lambda and mu of DESIGN.md). `cut_class` is per
+/// (Hooke: sigma = lambda tr(eps) I + 2 mu eps, lambda and mu of DESIGN.md; for `model` other
+/// than linear, the model's Cauchy stress, 0 in inverted cells: cell_stress.h). `cut_class` is per
 /// input tet; `u` is evaluated from several threads at once (parallel_for.h), so it must not
 /// modify shared state. `progress` (optional) is called with the fraction done. Throws xfem::Error for a bad
 /// E or nu, or a non-finite displacement (naming the point and its input tet).
@@ -45,7 +51,7 @@ struct DeformedBody {
 /// cut's exact geometry, e.g. to measure its area).
 DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
                            double E, double nu, const std::function<void(double)>& progress = {},
-                           double wound_offset = 1e-4);
+                           double wound_offset = 1e-4, MaterialModel model = MaterialModel::Linear);
 
 /// How far the cut opened: over the points of the cut present once per side (same position),
 /// the jump d = u(x, +1) - u(x, -1) and its normal part d . n(x), n the cut's unit normal there
