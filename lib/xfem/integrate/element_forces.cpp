@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/integrate/element_forces.h"
 
+#include <Eigen/Eigenvalues>
+
 namespace xfem {
 
 Eigen::Matrix3d deformation_gradient(const ElementPoints& points, int p, const Eigen::VectorXd& ue) {
@@ -13,7 +15,7 @@ Eigen::Matrix3d deformation_gradient(const ElementPoints& points, int p, const E
 }
 
 bool element_forces(const ElementPoints& points, const MaterialLaw& law, const Eigen::VectorXd& ue, bool tangent,
-                    ElementForces& out) {
+                    ElementForces& out, Tangent kind) {
   const int n = static_cast<int>(ue.size() / 3);
   out.energy = 0.0;
   out.min_J = std::numeric_limits<double>::infinity();
@@ -23,11 +25,15 @@ bool element_forces(const ElementPoints& points, const MaterialLaw& law, const E
   // B (9 x 3n): d vec(F) / d ue, vec(F)[3 i + J] = F_iJ, so that r = sum w B^T vec(P) and
   // k = sum w B^T A B.
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(9, 3 * n);
+  const double volume = points.weight.sum();
   for (int p = 0; p < points.size(); ++p) {
     const Eigen::Matrix3d F = deformation_gradient(points, p, ue);
     const double J = F.determinant();
     out.min_J = std::min(out.min_J, J);
-    if (law.model != MaterialModel::Linear && !(J > 0.0)) return false;
+    if (law.model != MaterialModel::Linear && !(J > 0.0)) {
+      if (points.weight[p] < 1e-9 * volume) continue;
+      return false;
+    }
     if (!stress_at(law, F, s)) return false;
     const double w = points.weight[p];
     for (int c = 0; c < n; ++c)
@@ -38,6 +44,10 @@ bool element_forces(const ElementPoints& points, const MaterialLaw& law, const E
       for (int J2 = 0; J2 < 3; ++J2) P[3 * i + J2] = s.P(i, J2);
     out.energy += w * s.energy;
     out.r.noalias() += w * B.transpose() * P;
+    if (tangent && kind == Tangent::Projected) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>> eigen(s.A);
+      s.A = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+    }
     if (tangent) out.k.noalias() += w * B.transpose() * s.A * B;
   }
   return true;

@@ -21,11 +21,17 @@ struct ElementForces {
   double min_J = 0.0;  ///< the smallest det F over the points
 };
 
+/// How the tangent is formed: the exact dr/du, or with each point's A projected onto the positive
+/// semi-definite matrices (its negative eigenvalues set to 0: "projected Newton"), which keeps K
+/// positive definite where the exact tangent is not (buckling, the extreme strains next to a
+/// crack front) at the price of quadratic convergence while a projection is active.
+enum class Tangent { Exact, Projected };
+
 /// Evaluates the tet at `ue`; k only when `tangent`. Returns false, leaving `out` incomplete, when
 /// a point of a model other than "linear" has det F <= 0 (an inverted point: the solve rejects
 /// the step); the linear model never refuses.
 bool element_forces(const ElementPoints& points, const MaterialLaw& law, const Eigen::VectorXd& ue, bool tangent,
-                    ElementForces& out);
+                    ElementForces& out, Tangent kind = Tangent::Exact);
 
 /// The deformation gradient at point p: I + sum_c u_c (x) grad Phi_c.
 Eigen::Matrix3d deformation_gradient(const ElementPoints& points, int p, const Eigen::VectorXd& ue);

@@ -67,18 +67,29 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     }
     if (it == c.options.max_iterations) return false;
     // K_ff du_f = -(R_f + K_fc du_c), the same pattern every time: one analysis, many factorizations.
-    const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
-    const ReducedSystem reduced = eliminate_dirichlet(full, -R, fixed, change);
+    // A tangent that is not positive definite (extreme strains next to a crack front, buckling) is
+    // formed again with each point's tangent projected onto the positive semi-definite ones.
+    ReducedSystem reduced;
     clock = std::chrono::steady_clock::now();
-    try {
-      if (!c.factor) {
-        c.factor = std::make_unique<CholeskyFactor>(reduced.K, c.options.ordering == "amd" ? Ordering::Amd : Ordering::Metis);
-        c.result.analyze_seconds = c.factor->analyze_seconds;
-      } else {
-        c.factor->refactor(reduced.K);
+    for (Tangent kind : {Tangent::Exact, Tangent::Projected}) {
+      if (kind == Tangent::Projected) {
+        double e_projected = 0.0;
+        internal_forces(em, *c.problem.body, c.problem.law, u, e_projected, r, &c.K, nullptr, Tangent::Projected);
+        ++step.projected;
       }
-    } catch (const NotPositiveDefinite&) {
-      return false;  // the tangent lost definiteness (buckling, a too large step): halve the step
+      const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
+      reduced = eliminate_dirichlet(full, -R, fixed, change);
+      try {
+        if (!c.factor) {
+          c.factor = std::make_unique<CholeskyFactor>(reduced.K, c.options.ordering == "amd" ? Ordering::Amd : Ordering::Metis);
+          c.result.analyze_seconds = c.factor->analyze_seconds;
+        } else {
+          c.factor->refactor(reduced.K);
+        }
+        break;
+      } catch (const NotPositiveDefinite&) {
+        if (kind == Tangent::Projected) return false;  // not even the projected tangent: halve the step
+      }
     }
     ++c.result.factorizations;
     step.factor_seconds += seconds_since(clock);
@@ -89,6 +100,7 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     double alpha = 1.0;
     bool accepted = false;
     Eigen::VectorXd trial;
+    int inverted = 0;
     for (int k = 0; k <= 10 && !accepted; ++k, alpha /= 2) {
       trial = u + alpha * du;
       if (k == 0)
@@ -97,10 +109,17 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
       clock = std::chrono::steady_clock::now();
       const bool valid = internal_forces(em, *c.problem.body, c.problem.law, trial, e_trial, r_trial, nullptr);
       step.assemble_seconds += seconds_since(clock);
-      if (!valid) continue;
+      if (!valid) {
+        ++inverted;
+        continue;
+      }
       accepted = !at_target || norm_on(r_trial - fs, c.is_fixed, false) <= before;
       if (accepted) step.iterations.back().step = alpha;
     }
+    if (c.options.detail)
+      c.options.detail(accepted ? "  line search: step " + cli::three_digits(step.iterations.back().step) +
+                                      (inverted ? " (" + std::to_string(inverted) + " longer steps invert a point)" : "")
+                                : "  line search: no step reduces the residual without inverting a point");
     if (!accepted) return false;
     u = trial;
   }

@@ -43,6 +43,7 @@ struct LoadStep {
   std::vector<NewtonIteration> iterations;
   double final_residual = 0.0;             ///< relative residual at the accepted u
   double factor_seconds = 0.0, assemble_seconds = 0.0;
+  int projected = 0;  ///< iterations that needed the projected tangent (element_forces.h)
 };
 
 struct NewtonResult {

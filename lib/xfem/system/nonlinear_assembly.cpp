@@ -29,7 +29,8 @@ BodyIntegration integrate_body(const EnrichedMesh& em, int order, const std::fun
 }
 
 bool internal_forces(const EnrichedMesh& em, const BodyIntegration& body, const MaterialLaw& law,
-                     const Eigen::VectorXd& u, double& energy, Eigen::VectorXd& r, SparseMatrix* K, double* min_J) {
+                     const Eigen::VectorXd& u, double& energy, Eigen::VectorXd& r, SparseMatrix* K, double* min_J,
+                     Tangent kind) {
   const int tets = em.tets();
   r.setZero(3 * em.n);
   energy = 0.0;
@@ -55,7 +56,7 @@ bool internal_forces(const EnrichedMesh& em, const BodyIntegration& body, const 
         const int n = em.size(t);
         ue.resize(3 * n);
         for (int c = 0; c < n; ++c) ue.segment<3>(3 * c) = u.segment<3>(3 * em.dofs[base + c]);
-        if (!element_forces(body.tets[static_cast<std::size_t>(t)], law, ue, K != nullptr, results[i])) inverted = true;
+        if (!element_forces(body.tets[static_cast<std::size_t>(t)], law, ue, K != nullptr, results[i], kind)) inverted = true;
       }
     }, {}, 64);
     if (inverted) break;

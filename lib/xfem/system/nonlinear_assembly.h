@@ -28,6 +28,7 @@ BodyIntegration integrate_body(const EnrichedMesh& em, int order, const std::fun
 /// triangle, K's pattern: pattern_matrix). Returns false when some point of a model other than
 /// "linear" is inverted (det F <= 0); `min_J` gets the smallest det F met.
 bool internal_forces(const EnrichedMesh& em, const BodyIntegration& body, const MaterialLaw& law,
-                     const Eigen::VectorXd& u, double& energy, Eigen::VectorXd& r, SparseMatrix* K, double* min_J = nullptr);
+                     const Eigen::VectorXd& u, double& energy, Eigen::VectorXd& r, SparseMatrix* K, double* min_J = nullptr,
+                     Tangent kind = Tangent::Exact);
 
 }  // namespace xfem
