@@ -6,6 +6,7 @@
 // quadratically to a closed-form finite deformation.
 #include "xfem/system/nonlinear_assembly.h"
 
+#include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
@@ -243,4 +244,67 @@ TEST_CASE("newton: the linear model equals the linear solve; neo-Hookean converg
   }
   CHECK(big.min_J > 0);
   CHECK(big.factorizations >= 6);
+}
+
+TEST_CASE("element forces: the projected tangent is positive semi-definite and exact where the exact one is",
+          "[nonlinear]") {
+  // One plain tet's single point.
+  const xfem::EnrichedMesh em = xfem_test::plain(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
+  const xfem::CutElementSplits none;
+  xfem::ElementPoints points;
+  xfem::element_points(em, none, 0, 3, nullptr, points);
+  REQUIRE(points.size() == 1);
+  const xfem::MaterialLaw m = law(xfem::MaterialModel::NeoHookean);
+  xfem::ElementForces exact, projected;
+  // Undeformed: the exact tangent is positive semi-definite (zero on rotations), the projection
+  // changes nothing but round-off. (Strained, a rotation's second variation is the stress, of
+  // either sign: the projection then differs.)
+  const Eigen::VectorXd small = Eigen::VectorXd::Zero(12);
+  REQUIRE(xfem::element_forces(points, m, small, true, exact));
+  REQUIRE(xfem::element_forces(points, m, small, true, projected, xfem::Tangent::Projected));
+  CHECK((exact.k - projected.k).cwiseAbs().maxCoeff() <= 1e-10 * exact.k.cwiseAbs().maxCoeff());
+  // A strong compression (J = 0.05) makes the neo-Hookean tangent indefinite; projected, it is not.
+  const Eigen::Matrix3d F = Eigen::Vector3d(0.2, 0.5, 0.5).asDiagonal();
+  Eigen::VectorXd squeezed(12);
+  for (int c = 0; c < 4; ++c) {
+    const V x = em.mesh.points.row(em.mesh.tets(0, em.local[c])).transpose();
+    squeezed.segment<3>(3 * c) = F * x - x;
+  }
+  REQUIRE(xfem::element_forces(points, m, squeezed, true, exact));
+  REQUIRE(xfem::element_forces(points, m, squeezed, true, projected, xfem::Tangent::Projected));
+  const double lowest_exact = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(exact.k).eigenvalues().minCoeff();
+  const double lowest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(projected.k).eigenvalues().minCoeff();
+  CHECK(lowest_exact < -1e-3 * exact.k.norm());
+  CHECK(lowest > -1e-12 * projected.k.norm());
+  CHECK((exact.r - projected.r).norm() == 0.0);  // the forces are the same: only the tangent is changed
+}
+
+TEST_CASE("element forces: an inverted point refuses the step unless it carries a negligible volume", "[nonlinear]") {
+  // Two points of one plain tet's gradients: the second inverted (F = diag(-1, 1, 1)).
+  const xfem::EnrichedMesh em = xfem_test::plain(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
+  xfem::ElementPoints one;
+  xfem::element_points(em, xfem::CutElementSplits(), 0, 3, nullptr, one);
+  xfem::ElementPoints two;
+  two.gradient.resize(2, 12);
+  two.gradient.row(0) = one.gradient.row(0);
+  two.gradient.row(1) = -one.gradient.row(0);  // F_1 = I - (F_0 - I) = 2 I - F_0
+  const double volume = one.weight[0];
+  Eigen::VectorXd ue(12);
+  const Eigen::Matrix3d F0 = Eigen::Vector3d(2.0, 1.0, 1.0).asDiagonal();  // F_1 = diag(0, 1, 1): J = 0
+  for (int c = 0; c < 4; ++c) {
+    const V x = em.mesh.points.row(em.mesh.tets(0, em.local[c])).transpose();
+    ue.segment<3>(3 * c) = F0 * x - x;
+  }
+  xfem::ElementForces out;
+  const xfem::MaterialLaw m = law(xfem::MaterialModel::NeoHookean);
+  two.weight = Eigen::Vector2d(volume, 1e-3 * volume);
+  CHECK_FALSE(xfem::element_forces(two, m, ue, true, out));
+  two.weight = Eigen::Vector2d(volume, 1e-12 * volume);
+  REQUIRE(xfem::element_forces(two, m, ue, true, out));
+  xfem::ElementForces alone;
+  REQUIRE(xfem::element_forces(one, m, ue, true, alone));
+  CHECK(out.energy == alone.energy);  // the negligible inverted point is left out
+  // The linear model never refuses.
+  two.weight = Eigen::Vector2d(volume, 1e-3 * volume);
+  CHECK(xfem::element_forces(two, law(xfem::MaterialModel::Linear), ue, true, out));
 }

@@ -24,6 +24,7 @@ struct StepContext {
   SparseMatrix K;  // the tangent, lower triangle, K's pattern
   std::unique_ptr<CholeskyFactor>& factor;
   NewtonResult& result;
+  double force_floor;  // the smallest force scale: mu L^2 1e-6 (a strain of 1e-6 across the body)
 };
 
 double norm_on(const Eigen::VectorXd& v, const std::vector<char>& is_fixed, bool fixed_ones) {
@@ -48,7 +49,7 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     if (!internal_forces(em, *c.problem.body, c.problem.law, u, energy, r, &c.K)) return false;
     step.assemble_seconds += seconds_since(clock);
     R = r - fs;
-    const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), 1e-300});
+    const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), c.force_floor});
     const double residual = norm_on(R, c.is_fixed, false) / scale;
     std::vector<double> change(fixed.size());
     bool at_target = true;
@@ -135,8 +136,10 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
   problem.dirichlet(1.0, result.fixed, result.fixed_values);
   std::vector<int> outer;
   std::unique_ptr<CholeskyFactor> factor;
+  const double size = (em.mesh.points.colwise().maxCoeff() - em.mesh.points.colwise().minCoeff()).norm();
   StepContext context{problem, options, result.fixed, std::vector<char>(3 * em.n, 0),
-                      pattern_matrix(em, problem.body->pattern, outer), factor, result};
+                      pattern_matrix(em, problem.body->pattern, outer), factor, result,
+                      std::max(1e-6 * problem.law.lame.mu * size * size, 1e-300)};
   for (long d : result.fixed) context.is_fixed[d] = 1;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * em.n);
   const double full_step = 1.0 / options.load_steps;

@@ -68,8 +68,10 @@ struct NewtonResult {
 ///  - a load step whose Newton iterations fail (no convergence in max_iterations, a line search
 ///    that finds no step, a tangent that is not positive definite) is tried again as two halves,
 ///    at most max_halvings times.
-/// The residual's scale is the larger of ||s f|| and the internal forces on the constrained DOFs
-/// (the reactions), so that a displacement-driven problem converges relative to its forces.
+/// The residual's scale is the largest of ||s f||, the internal forces on the constrained DOFs
+/// (the reactions), so that a displacement-driven problem converges relative to its forces, and
+/// 1e-6 mu L^2 (L the body's diagonal: the force of a strain of 1e-6 across it), so that a
+/// stress-free answer (a rigid motion) converges too.
 /// Throws xfem::Error naming the load factor when a step fails after the last halving.
 NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& options);
 
