@@ -66,7 +66,11 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
       step.iterations.back().step = 0.0;  // no step taken: converged
       return true;
     }
-    if (it == c.options.max_iterations) return false;
+    if (it == c.options.max_iterations) {
+      step.failure = "no convergence in " + std::to_string(it) + " iterations (relative residual " +
+                     cli::three_digits(residual) + ")";
+      return false;
+    }
     // K_ff du_f = -(R_f + K_fc du_c), the same pattern every time: one analysis, many factorizations.
     // A tangent that is not positive definite (extreme strains next to a crack front, buckling) is
     // formed again with each point's tangent projected onto the positive semi-definite ones.
@@ -89,7 +93,10 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
         }
         break;
       } catch (const NotPositiveDefinite&) {
-        if (kind == Tangent::Projected) return false;  // not even the projected tangent: halve the step
+        if (kind == Tangent::Projected) {  // not even the projected tangent: halve the step
+          step.failure = "the tangent stiffness is singular even projected (a rigid motion left free?)";
+          return false;
+        }
       }
     }
     ++c.result.factorizations;
@@ -121,7 +128,10 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
       c.options.detail(accepted ? "  line search: step " + cli::three_digits(step.iterations.back().step) +
                                       (inverted ? " (" + std::to_string(inverted) + " longer steps invert a point)" : "")
                                 : "  line search: no step reduces the residual without inverting a point");
-    if (!accepted) return false;
+    if (!accepted) {
+      step.failure = "every step length inverts a point or increases the residual";
+      return false;
+    }
     u = trial;
   }
   return false;
@@ -161,11 +171,10 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
     }
     if (step < full_step / std::pow(2.0, options.max_halvings) * 1.5)
       throw Error("Newton's method failed at load factor " + cli::three_digits(s) + " after halving the load step " +
-                  std::to_string(options.max_halvings) + " times (last relative residual " +
-                  cli::three_digits(attempt.iterations.empty() ? 0.0 : attempt.iterations.back().residual) +
+                  std::to_string(options.max_halvings) + " times (" + attempt.failure +
                   "): give more load_steps, or a smaller load");
     step /= 2;
-    if (options.info) options.info("load " + cli::three_digits(s) + ": no convergence, the step halved");
+    if (options.info) options.info("load " + cli::three_digits(s) + ": " + attempt.failure + "; the step halved");
   }
   result.u = u;
   internal_forces(em, *problem.body, problem.law, u, result.energy, result.r, nullptr, &result.min_J);

@@ -44,6 +44,7 @@ struct LoadStep {
   double final_residual = 0.0;             ///< relative residual at the accepted u
   double factor_seconds = 0.0, assemble_seconds = 0.0;
   int projected = 0;  ///< iterations that needed the projected tangent (element_forces.h)
+  std::string failure;  ///< why it did not converge (empty when it did)
 };
 
 struct NewtonResult {
