@@ -2,6 +2,7 @@
 #include "xfem/integrate/element_forces.h"
 
 #include <Eigen/Eigenvalues>
+#include <array>
 
 namespace xfem {
 
@@ -22,34 +23,45 @@ bool element_forces(const ElementPoints& points, const MaterialLaw& law, const E
   out.r.setZero(3 * n);
   if (tangent) out.k.setZero(3 * n, 3 * n);
   StressAt s;
-  // B (9 x 3n): d vec(F) / d ue, vec(F)[3 i + J] = F_iJ, so that r = sum w B^T vec(P) and
-  // k = sum w B^T A B.
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(9, 3 * n);
+  // With G the point's gradients (n x 3, row c = grad Phi_c): r[3c + i] = sum_p w P_iJ G_cJ, and
+  // k[3c + i][3d + k] = sum_p w G_cJ A(3i + J, 3k + L) G_dL, accumulated as the 9 n x n blocks
+  // (i, k) and arranged at the end: the structure of dF/dU, without its zeros.
+  Eigen::Matrix<double, Eigen::Dynamic, 3> G(n, 3), R = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
+  std::array<Eigen::MatrixXd, 9> blocks;
+  if (tangent)
+    for (Eigen::MatrixXd& b : blocks) b.setZero(n, n);
+  Eigen::Matrix<double, Eigen::Dynamic, 9> H(n, 9);
   const double volume = points.weight.sum();
   for (int p = 0; p < points.size(); ++p) {
     const Eigen::Matrix3d F = deformation_gradient(points, p, ue);
     const double J = F.determinant();
     out.min_J = std::min(out.min_J, J);
     if (law.model != MaterialModel::Linear && !(J > 0.0)) {
-      if (points.weight[p] < 1e-9 * volume) continue;
+      if (points.weight[p] < 1e-9 * volume) continue;  // next to a crack front: docs/METHOD.md
       return false;
     }
     if (!stress_at(law, F, s)) return false;
     const double w = points.weight[p];
-    for (int c = 0; c < n; ++c)
-      for (int i = 0; i < 3; ++i)
-        for (int J2 = 0; J2 < 3; ++J2) B(3 * i + J2, 3 * c + i) = points.gradient(p, 3 * c + J2);
-    Eigen::Matrix<double, 9, 1> P;
-    for (int i = 0; i < 3; ++i)
-      for (int J2 = 0; J2 < 3; ++J2) P[3 * i + J2] = s.P(i, J2);
+    for (int c = 0; c < n; ++c) G.row(c) = points.gradient.block<1, 3>(p, 3 * c);
     out.energy += w * s.energy;
-    out.r.noalias() += w * B.transpose() * P;
-    if (tangent && kind == Tangent::Projected) {
+    R.noalias() += w * G * s.P.transpose();
+    if (!tangent) continue;
+    if (kind == Tangent::Projected) {
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>> eigen(s.A);
       s.A = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
     }
-    if (tangent) out.k.noalias() += w * B.transpose() * s.A * B;
+    for (int i = 0; i < 3; ++i) {
+      H.noalias() = w * G * s.A.block<3, 9>(3 * i, 0);
+      for (int k = 0; k < 3; ++k) blocks[3 * i + k].noalias() += H.middleCols<3>(3 * k) * G.transpose();
+    }
   }
+  for (int c = 0; c < n; ++c)
+    for (int i = 0; i < 3; ++i) out.r[3 * c + i] = R(c, i);
+  if (tangent)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < n; ++d)
+          for (int c = 0; c < n; ++c) out.k(3 * c + i, 3 * d + k) = blocks[3 * i + k](c, d);
   return true;
 }
 
