@@ -80,6 +80,8 @@ int main(int argc, char** argv) {
     xfem::cli::check_output_directory(output);
     const double start = xfem::cli::now();
     xfem::Problem problem = xfem::read_problem(problem_path);
+    // K u = f is the small-strain model's: another model needs xfem-newton's nonlinear solve.
+    xfem::require_linear_material(problem, "xfem-assemble writes the linear system of the small-strain model");
     if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
     else if (points > 0 || refine >= 0) problem.rule = xfem::Problem::Rule::Oversampling;
     if (order > 0) problem.order = order;

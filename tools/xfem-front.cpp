@@ -98,6 +98,7 @@ int main(int argc, char** argv) {
   });
   return xfem::cli::run(*tool, argc, argv, [&] {
     const xfem::Problem problem = xfem::read_problem(problem_path);
+    xfem::require_linear_material(problem, "xfem-front's interaction integral is small-strain");
     std::vector<std::string> warnings;
     xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
     xfem::select_front_of(em, front_of, input);

@@ -33,6 +33,9 @@ bad unknown 's/"dirichlet"/"dirichlett"/'; expect_error "unknown key 'dirichlett
 bad empty 's/"point": \[0, 0, 0.199\]/"point": [0, 0, 0.2]/'
 expect_error "empty.json: dirichlet[1] ('pulled edge z > 0.199, x < 0.001') selects no node" "$S/empty.json"
 expect_error "cannot open" "$S/no_such_problem.json"
+# K u = f is the small-strain model's: another material.model is refused (xfem-newton solves it).
+bad neo 's/"nu": 0.35}/"nu": 0.35, "model": "neo-hookean"}/'
+expect_error "neo.json: xfem-assemble writes the linear system of the small-strain model: material.model \"neo-hookean\" is not supported (use \"linear\"; xfem-newton solves \"neo-hookean\")" "$S/neo.json"
 rm -rf "$S/bad"
 "$ASSEMBLE" "$S/no_such.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" -o "$S/bad" 2>"$S/err.txt"
 [ $? -eq 1 ] && grep -q "error:" "$S/err.txt" && [ ! -e "$S/bad" ] || fail "missing mesh must exit 1"

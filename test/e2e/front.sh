@@ -22,6 +22,15 @@ printf '%%%%MatrixMarket matrix array real general\n3 1\n1\n2\n3\n' > "$XFEM_SCR
 [ $? -eq 1 ] || fail "a short solution must exit 1"
 grep -q "error:.*expected 3N" "$XFEM_SCRATCH/err" || fail "short solution message: $(cat "$XFEM_SCRATCH/err")"
 [ ! -e "$XFEM_SCRATCH/f.csv" ] && [ ! -e "$XFEM_SCRATCH/f.vtp" ] || fail "output left behind"
+# The interaction integral is small-strain: a nonlinear material.model is refused, nothing written.
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["material"]["model"] = "neo-hookean"; json.dump(j, open(sys.argv[2], "w"))' \
+  "$P/data/mode1.json" "$XFEM_SCRATCH/neo.json" || fail "neo.json"
+"$F" "$M/enriched.vtu" --cut "$O/cut.vtp" --solution "$M/mode1/u.mtx" --problem "$XFEM_SCRATCH/neo.json" \
+  --csv "$XFEM_SCRATCH/f.csv" -o "$XFEM_SCRATCH/f.vtp" 2>"$XFEM_SCRATCH/err"
+[ $? -eq 1 ] || fail "a neo-hookean problem.json must exit 1"
+[ "$(cat "$XFEM_SCRATCH/err")" = "xfem-front: error: $XFEM_SCRATCH/neo.json: xfem-front's interaction integral is small-strain: material.model \"neo-hookean\" is not supported (use \"linear\"; xfem-newton solves \"neo-hookean\")" ] ||
+  fail "neo-hookean message: $(cat "$XFEM_SCRATCH/err")"
+[ ! -e "$XFEM_SCRATCH/f.csv" ] && [ ! -e "$XFEM_SCRATCH/f.vtp" ] || fail "output left behind for a neo-hookean problem.json"
 # A domain reaching the Dirichlet faces: results, and a warning that says so.
 "$F" "$M/enriched.vtu" --cut "$O/cut.vtp" --solution "$M/mode1/u.mtx" --problem "$P/data/mode1.json" \
   --radius 0.6 --csv "$XFEM_SCRATCH/f.csv" 2>"$XFEM_SCRATCH/err" || fail "radius 0.6 must still compute"

@@ -45,6 +45,10 @@ expect_error "--backend petsc: not available in xfem-sweep" "$S/box.vtu" --cut "
 expect_error "missing.vtu" "$S/missing.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2
 sed 's/"value": \[0, 0, 0\]/"exact": {"rigid": {"above": {"translation": [0, 0, 0]}}}/' "$P" >"$S/exact.json"
 expect_error "prescribes an exact field" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/exact.json" --steps 2
+sed 's/"nu": 0.3}/"nu": 0.3, "model": "corotational"}/' "$P" >"$S/corotational.json"
+expect_error "corotational.json: xfem-sweep solves linear systems only: material.model \"corotational\" is not supported (use \"linear\"; xfem-newton solves \"corotational\")" \
+  "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/corotational.json" --steps 2
+[ ! -e "$S/bad" ] || fail "a refused material.model left the frame directory behind"
 (unset DISPLAY; expect_error "rendering needs an X display" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 --png)
 touch "$S/file"
 "$SWEEP" "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/file" 2>"$S/err.txt"

@@ -237,3 +237,23 @@ TEST_CASE("problem: a bad material.model or load_steps gives one error line nami
     CHECK(error_of(j) == "problem.json: load_steps must be an integer in 1..1000000, got 10000000000");
   }
 }
+
+TEST_CASE("problem: require_linear_material passes linear and refuses the other models by name", "[problem]") {
+  xfem::Json j = beam();
+  const std::string reason = "xfem-front's interaction integral is small-strain";
+  CHECK_NOTHROW(xfem::require_linear_material(xfem::parse_problem(j, "problem.json"), reason));  // default: linear
+  j["material"]["model"] = "linear";
+  CHECK_NOTHROW(xfem::require_linear_material(xfem::parse_problem(j, "problem.json"), reason));
+  for (const std::string model : {"corotational", "neo-hookean"}) {
+    j["material"]["model"] = model;
+    const xfem::Problem p = xfem::parse_problem(j, "in/problem.json");
+    std::string message;
+    try {
+      xfem::require_linear_material(p, reason);
+    } catch (const xfem::Error& e) {
+      message = e.what();
+    }
+    CHECK(message == "in/problem.json: xfem-front's interaction integral is small-strain: material.model \"" + model +
+                         "\" is not supported (use \"linear\"; xfem-newton solves \"" + model + "\")");
+  }
+}

@@ -66,6 +66,7 @@ void run_sweep(const SweepOptions& o) {
   const std::vector<double> t = step_times(times, steps);
   check_finite_times(times, t, o.cut_path);
   const Problem problem = read_problem(o.problem_path);
+  require_linear_material(problem, "xfem-sweep solves linear systems only");
   std::filesystem::create_directories(o.dir);
 
   double start = cli::now();

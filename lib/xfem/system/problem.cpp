@@ -375,4 +375,11 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
   return nodes;
 }
 
+void require_linear_material(const Problem& problem, const std::string& reason) {
+  if (problem.model == MaterialModel::Linear) return;
+  const std::string name = material_model_name(problem.model);
+  throw Error(problem.file + ": " + reason + ": material.model \"" + name + "\" is not supported (use \"linear\"; " +
+              "xfem-newton solves \"" + name + "\")");
+}
+
 }  // namespace xfem

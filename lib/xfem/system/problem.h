@@ -69,7 +69,8 @@ struct Problem {
   std::string file;     ///< where it was read from, for messages
   double E = 0.0;       ///< Young's modulus, Pa, > 0
   double nu = 0.0;      ///< Poisson's ratio, in (-1, 0.5)
-  /// material.model: the law of the nonlinear solve (material_law.h); the linear tools ignore it.
+  /// material.model: the law of the nonlinear solve (material_law.h); the linear tools refuse any
+  /// other than Linear (require_linear_material).
   MaterialModel model = MaterialModel::Linear;
   /// load_steps: the nonlinear solve applies the loads in this many equal steps (>= 1); the
   /// linear tools ignore it.
@@ -109,6 +110,12 @@ ExactField read_exact_field(const std::string& path);
 /// when a named point array is missing or has more than one component, or a group is unknown
 /// ("<what>: the mesh has no group 'lid' (its groups: 'fixed', 'pulled')").
 std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
+
+/// Refuses a material.model other than "linear" where a tool would silently apply Hooke's law
+/// instead: throws xfem::Error "<file>: <reason>: material.model \"neo-hookean\" is not supported
+/// (use \"linear\"; xfem-newton solves \"neo-hookean\")". `reason` says why the tool is
+/// small-strain, e.g. "xfem-front's interaction integral is small-strain".
+void require_linear_material(const Problem& problem, const std::string& reason);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);
