@@ -86,12 +86,7 @@ int main(int argc, char** argv) {
     else if (points > 0 || refine >= 0) problem.rule = xfem::Problem::Rule::Oversampling;
     if (order > 0) problem.order = order;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
-    std::vector<std::string> warnings;
-    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
-    for (const auto& w : warnings) xfem::cli::warn(w);
-    if (cut_paths.empty() && em.n > em.np)
-      throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
-                        " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
     long enriched_tets = 0;  // cost guard: integration points of the tets with enriched DOFs

@@ -48,12 +48,7 @@ int main(int argc, char** argv) {
     if (!run.report_path.empty()) xfem::cli::check_output(run.report_path, {".json"}, true);
     run.problem_path = problem_path;
     const xfem::Problem problem = xfem::read_problem(problem_path);
-    std::vector<std::string> warnings;
-    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
-    for (const auto& w : warnings) xfem::cli::warn(w);
-    if (cut_paths.empty() && em.n > em.np)
-      throw xfem::Error(input + ": " + std::to_string(em.n - em.np) +
-                        " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+    const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     xfem::Json report;
     report["generator"] = std::string("xfem-newton ") + xfem::version;
     report["problem"] = problem_path;

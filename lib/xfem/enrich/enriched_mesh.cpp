@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enrich/enriched_mesh.h"
 
+#include "xfem/core/cli.h"
+
 #include <string>
 
 #include "xfem/core/error.h"
@@ -193,6 +195,16 @@ const CutSurface* cut_of_tet(const EnrichedMesh& em, int t) {
   if (em.cuts.empty()) return em.cut.get();
   const int k = branch_cut_of_tet(em, t);
   return k < 0 ? em.cut.get() : em.cuts[k].cut.get();
+}
+
+EnrichedMesh read_enriched_mesh_to_solve(const std::string& vtu, const std::vector<std::string>& cut_paths) {
+  std::vector<std::string> warnings;
+  EnrichedMesh em = read_enriched_mesh_cuts(vtu, cut_paths, &warnings);
+  for (const auto& w : warnings) cli::warn(w);
+  if (cut_paths.empty() && em.n > em.np)
+    throw Error(vtu + ": " + std::to_string(em.n - em.np) +
+                " enriched displacements (NS + 4 NB > 0) need the cut surface: give --cut");
+  return em;
 }
 
 }  // namespace xfem

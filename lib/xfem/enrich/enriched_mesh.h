@@ -71,6 +71,11 @@ EnrichedMesh read_enriched_mesh(const std::string& vtu, const std::string& cut_p
 EnrichedMesh read_enriched_mesh_cuts(const std::string& vtu, const std::vector<std::string>& cut_paths,
                                      std::vector<std::string>* warnings = nullptr);
 
+/// What a solve reads (xfem-assemble, xfem-newton): read_enriched_mesh_cuts with its warnings on
+/// stderr (cli::warn); throws xfem::Error naming `vtu` when the mesh has enriched DOFs and no cut
+/// is given.
+EnrichedMesh read_enriched_mesh_to_solve(const std::string& vtu, const std::vector<std::string>& cut_paths);
+
 
 /// The cut whose branch block holds `dof` (a branch DOF of a mesh with several cuts), or -1.
 int branch_cut_of_dof(const EnrichedMesh& em, long dof);

@@ -46,7 +46,10 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
   double energy = 0.0;
   for (int it = 0; it <= c.options.max_iterations; ++it) {
     auto clock = std::chrono::steady_clock::now();
-    if (!internal_forces(em, *c.problem.body, c.problem.law, u, energy, r, &c.K)) return false;
+    if (!internal_forces(em, *c.problem.body, c.problem.law, u, energy, r, &c.K)) {
+      step.failure = "a point is inverted at the start of the step";
+      return false;
+    }
     step.assemble_seconds += seconds_since(clock);
     R = r - fs;
     const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), c.force_floor});

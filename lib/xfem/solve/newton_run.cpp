@@ -31,6 +31,7 @@ Json steps_json(const std::vector<LoadStep>& steps) {
                    {"iterations", static_cast<long>(s.iterations.size()) - 1},
                    {"relative_residuals", residuals},
                    {"line_search_steps", lengths},
+                   {"projected_tangents", s.projected},
                    {"assemble_seconds", s.assemble_seconds},
                    {"factor_seconds", s.factor_seconds}});
   }
