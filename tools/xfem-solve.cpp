@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     using xfem::cli::three_digits;
     xfem::cli::check_output(output, {".mtx"}, true);
     if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
-    backend = xfem::launch_backend(dir, backend, processes, XFEM_SOLVE_LINKS_PETSC, argc, argv);
+    backend = xfem::launch_backend(dir, backend, processes, XFEM_SOLVE_LINKS_PETSC, argc, argv, output);
 #if XFEM_SOLVE_LINKS_PETSC
     std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();

@@ -171,6 +171,14 @@ expect 1 "rows.mtx: the size line claims 1000000000000 values" \
 expect 2 "--refine: value 1e+300 is not in [0, 8]" \
   "$B/xfem-assemble" "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$PROBLEM" --refine 1e300 -o "$S/n"
 absent "$S/n.vtu" "$S/n"
+# CLI11's own range checks print their bounds with std::to_string: DBL_MAX in 309 digits.
+expect 2 "--radius: Value -1 not in range 0 to 1.79769e+308" "$B/xfem-front" "$S/enriched.vtu" --cut "$S/cut.vtp" \
+  -s "$S/u.mtx" -p "$PROBLEM" --radius -1 -o "$S/n.vtp"
+[ "$(wc -c <"$S/err.txt")" -lt 200 ] || fail "a long number in: $(cat "$S/err.txt")"
+# The bytes of a corrupt file a message quotes are escaped: one printable line.
+sed 's/NumberOfCells="\([0-9]*\)"/NumberOfCells="\1\x01\xff"/' "$S/beam.vtu" >"$S/bytes.vtu"
+expect 1 "\\x01\\xff' is not a count" "$B/xfem-classify" "$S/bytes.vtu" --cut "$S/cut.vtp" -o "$S/n.vtu"
+! LC_ALL=C grep -q '[^[:print:]]' "$S/err.txt" || fail "raw bytes in: $(cat -v "$S/err.txt")"
 "$B/xfem-classify" -q "$S/beam.vtu" --cut "$S/other.vtp" -o "$S/miss.vtu" --summary "$S/missing_dir/x.json" 2>"$S/err.txt"
 [ "$(grep -c warning "$S/err.txt")" -eq 0 ] || fail "-q printed a warning: $(cat "$S/err.txt")"
 

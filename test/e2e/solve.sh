@@ -79,7 +79,40 @@ if ! "$SOLVE" --version | grep -q petsc; then
 fi
 "$SOLVE" -q "$DATA/beam_1x2x4" -o "$S/u_petsc1.mtx" --backend petsc --rtol 1e-10 || fail "petsc 1 rank"
 d=$(maxdiff "$S/u.mtx" "$S/u_petsc1.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-9 * 0.02 * 100)}' || fail "PETSc (1) differs by $d"
+# A restart under mpirun that fails, or "succeeds" without writing u.mtx, is one error line with
+# mpirun's exit status and the first meaningful line it printed (fake launchers first on PATH).
+mkdir -p "$S/fake"
+expect_launch() {  # expect_launch <text> <fake mpirun body>: --np 2 through that mpirun
+  local text=$1; printf '#!/bin/sh\n%s\n' "$2" >"$S/fake/mpirun"; chmod +x "$S/fake/mpirun"
+  rm -f "$S/bad.mtx"
+  PATH="$S/fake:$PATH" "$SOLVE" "$DATA/beam_1x2x4" -o "$S/bad.mtx" --backend petsc --np 2 2>"$S/err.txt"; local rc=$?
+  [ $rc -eq 1 ] || fail "fake mpirun ($2): expected exit 1, got $rc: $(cat "$S/err.txt")"
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] || fail "fake mpirun ($2): expected one line: $(cat "$S/err.txt")"
+  grep -q "^xfem-solve: error: " "$S/err.txt" && grep -qF -- "$text" "$S/err.txt" || fail "fake mpirun ($2): expected '$text', got: $(cat "$S/err.txt")"
+  [ ! -e "$S/bad.mtx" ] || fail "fake mpirun ($2): output left behind"
+}
+expect_launch "mpirun -np 2 xfem-solve-petsc exited 0 without writing $S/bad.mtx: it printed nothing" 'exit 0'
+expect_launch "mpirun -np 2 xfem-solve-petsc failed (exit status 1), no output written: it printed nothing" 'exit 1'
+expect_launch "mpirun -np 2 xfem-solve-petsc failed (killed by signal 9 (Killed)), no output written" 'kill -9 $$'
+noise='printf -- "-----\\n\\nAt least one pair of MPI processes are unable to reach each other for\\nMPI communications.  This means\\n-----\\n" >&2; i=0; while [ $i -lt 35 ]; do echo "[vm:1] *** noise $i" >&2; i=$((i+1)); done; exit 1'
+expect_launch 'xfem-solve-petsc failed (exit status 1), no output written: "At least one pair of MPI processes are unable to reach each other for MPI communications."' "$noise"
+# ... while the PETSc program's own error line passes through as it is, with its exit status.
+expect_launch "xfem-solve: error: K is wrong" 'echo "xfem-solve: error: K is wrong" >&2; echo "Open MPI noise" >&2; exit 1'
+# Open MPI that cannot start (no PATH: no ssh, no orted) on one process: one line, or a solution.
+rm -f "$S/bad.mtx"; env PATH= "$SOLVE" "$DATA/beam_1x2x4" -o "$S/bad.mtx" --backend petsc 2>"$S/err.txt"; rc=$?
+if [ $rc -ne 0 ]; then
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] && grep -q "^xfem-solve: error: .*xfem-solve-petsc failed (exit status" "$S/err.txt" ||
+    fail "PETSc without PATH: expected one error line, got $(wc -l <"$S/err.txt"): $(head -c 600 "$S/err.txt")"
+  [ ! -e "$S/bad.mtx" ] || fail "PETSc without PATH: output left behind"
+else
+  [ -s "$S/bad.mtx" ] || fail "PETSc without PATH: exit 0 without u.mtx"
+fi
 if command -v mpirun >/dev/null; then
+  # Ranks that cannot reach each other (only the "self" transport): one line, exit 1.
+  rm -f "$S/bad.mtx"; OMPI_MCA_btl=self "$SOLVE" "$DATA/beam_1x2x4" -o "$S/bad.mtx" --backend petsc --np 2 2>"$S/err.txt"
+  rc=$?; [ $rc -eq 1 ] || fail "btl=self: expected exit 1, got $rc"
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] && grep -q "^xfem-solve: error: mpirun -np 2 xfem-solve-petsc failed" "$S/err.txt" ||
+    fail "btl=self: expected one error line: $(head -c 600 "$S/err.txt")"
   mpirun --allow-run-as-root --oversubscribe -np 2 "$SOLVE" -q "$DATA/beam_1x2x4" -o "$S/u_petsc2.mtx" --backend petsc \
     --rtol 1e-10 || fail "petsc 2 ranks"
   d=$(maxdiff "$S/u.mtx" "$S/u_petsc2.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-9 * 0.02 * 100)}' || fail "PETSc (2) differs by $d"

@@ -230,3 +230,30 @@ TEST_CASE("cli: outputs are checked before any work", "[cli]") {
   CHECK_THROWS_WITH(xfem::cli::check_output("-", {".vtu"}), Catch::Contains("cannot go to stdout"));
   CHECK_NOTHROW(xfem::cli::check_output("-", {".json"}, true));
 }
+
+TEST_CASE("cli: messages carry short numbers and printable bytes only", "[cli][messages]") {
+  using xfem::cli::printable_line;
+  using xfem::cli::short_numbers;
+  // CLI11's range check of a positive number: std::to_string of DBL_MIN and DBL_MAX.
+  const std::string dbl_max = std::to_string(std::numeric_limits<double>::max());
+  REQUIRE(dbl_max.size() == 316);  // 309 digits and ".000000"
+  CHECK(short_numbers("Value -1 not in range " + std::to_string(std::numeric_limits<double>::min()) + " to " + dbl_max) ==
+        "Value -1 not in range 0 to 1.79769e+308");
+  CHECK(short_numbers("-" + dbl_max + ")") == "-1.79769e+308)");
+  // What is not std::to_string's stays: integers up to 20 digits, decimals, names and paths.
+  CHECK(short_numbers("18446744073709551615 rows, 0.5 m, 1.000001, x123456789012345678901234, "
+                      "/tmp/123456789012345678901234/u.mtx") ==
+        "18446744073709551615 rows, 0.5 m, 1.000001, x123456789012345678901234, /tmp/123456789012345678901234/u.mtx");
+  // Control bytes and bytes that are not UTF-8 as \xNN; UTF-8 text and line breaks as they read.
+  CHECK(printable_line("count '2\x01\xff' in caf\xc3\xa9.vtu\nline 2\t", 100) == "count '2\\x01\\xff' in caf\xc3\xa9.vtu line 2");
+  CHECK(printable_line("\x7f\xc3", 100) == "\\x7f\\xc3");
+  CHECK(printable_line(std::string(50, 'a'), 10) == "aaaaaaaaaa...");
+  // Through a tool: one printable line with short numbers on stderr.
+  Captured io;
+  auto tool = xfem::cli::make_tool("t", "test", "");
+  char name[] = "t";
+  char* argv[] = {name};
+  const int code = xfem::cli::run(*tool, 1, argv, [&] { throw xfem::Error("bad\x02 " + dbl_max); });
+  CHECK(code == 1);
+  CHECK(io.err.str() == "t: error: bad\\x02 1.79769e+308\n");
+}

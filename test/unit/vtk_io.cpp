@@ -19,6 +19,7 @@
 
 #include "xfem/generate/box_mesh.h"
 #include "xfem/core/error.h"
+#include "xfem/io/vtk_io_detail.h"
 
 namespace fs = std::filesystem;
 using xfem::DataArray;
@@ -830,4 +831,25 @@ TEST_CASE("vtk_io: a surface written as .vtu (a grid of triangles) reads back wi
   xfem::write_tet_mesh(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}), dir + "/box.vtu");
   CHECK(error_of([&] { xfem::read_triangle_mesh(dir + "/box.vtu"); }) ==
         dir + "/box.vtu: cell 0 is a vtkTetra (VTK type 10), expected triangles only (VTK type 5)");
+}
+
+TEST_CASE("vtk_io: VTK's messages reach the user without addresses, raw bytes or object dumps", "[vtk_io][messages]") {
+  const auto clean = [](const std::string& m) { return xfem::vtk_io_detail::MessageCollector::clean(m.c_str()); };
+  // The reader's own error: source location and "<Class> (0x...): " go.
+  CHECK(clean("ERROR: In /build/vtk/IO/XML/vtkXMLReader.cxx, line 512\nvtkXMLUnstructuredGridReader (0x5585a1b2c3d0): "
+              "Error parsing input file.  ReadXMLInformation aborting.\n\n") ==
+        "Error parsing input file.  ReadXMLInformation aborting.");
+  // The executive's: addresses inside the message, then an object dump on the following lines.
+  CHECK(clean("ERROR: In /build/vtk/Common/ExecutionModel/vtkExecutive.cxx, line 753\nvtkCompositeDataPipeline "
+              "(0x5585a1b2c3d0): Algorithm vtkXMLUnstructuredGridReader(0x5585a1b2d4e0) returned failure for request: "
+              "vtkInformation (0x5585a1b2e5f0)\n  Debug: Off\n  Modified Time: 123\n") ==
+        "Algorithm vtkXMLUnstructuredGridReader returned failure for request: vtkInformation");
+  // Bytes of a corrupt file VTK quotes: escaped; the line capped.
+  CHECK(clean("vtkXMLDataParser (0x55aa00112233): bad token 'A\x01\xff'") == "bad token 'A\\x01\\xff'");
+  const std::string long_message = clean(("vtkXMLParser (0x55aa00112233): " + std::string(1000, 'x')).c_str());
+  CHECK(long_message == std::string(200, 'x') + "...");
+  // What is not an address stays: a short hexadecimal value, a warning without a class.
+  CHECK(clean("Warning: In file.cxx, line 1\nvtkDataReader (0x1234567): value 0x1f is odd\n") == "value 0x1f is odd");
+  for (const char* m : {"ERROR: In a.cxx, line 2\nvtkFoo (0xdeadbeef1234): x (0xdeadbeef5678) y 0x55aa00112233 z\n"})
+    CHECK(clean(m).find("0x") == std::string::npos);
 }

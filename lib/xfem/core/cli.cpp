@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,14 +33,77 @@ struct CurrentTool {
   const Tool* previous;
 };
 
-// Errors are printed as one line: a message spanning lines (an exception text quoting a file)
-// would break the "<tool>: error: <what>" contract that scripts grep for.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+// Length of the valid UTF-8 sequence starting at text[i] (a byte >= 0x80), 0 when it is not one.
+std::size_t utf8_length(const std::string& text, std::size_t i) {
+  const auto c = static_cast<unsigned char>(text[i]);
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) return 0;
+  return n;
 }
+
+}  // namespace
+
+std::string short_numbers(const std::string& text) {
+  // std::to_string of a double, as CLI11's range checks print their bounds ("0.000000 to
+  // 1797693...(309 digits).000000"): a number longer than 20 characters (more than any 64-bit
+  // integer) in short form, a whole number without its ".000000".
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/'; };
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t end = i;
+    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+    if (end > i && end < text.size() && text[end] == '.')
+      for (++end; end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]));) ++end;
+    const bool alone = (i == 0 || !word(text[i - 1])) && (end == text.size() || !word(text[end]));
+    const std::string number = text.substr(i, end - i);
+    const bool whole = number.size() > 7 && number.compare(number.size() - 7, 7, ".000000") == 0;
+    if (alone && (i == 0 || text[i - 1] != '.') && (number.size() > 20 || whole)) {
+      // "0.000000" -> "0" (std::to_string's six decimals of a whole number), 309 digits -> "1.79769e+308"
+      out += number.size() - (whole ? 7 : 0) > 20 ? xfem::short_number(std::strtod(number.c_str(), nullptr))
+                                                  : number.substr(0, number.size() - 7);
+      i = end;
+    } else if (end > i) {
+      out.append(text, i, end - i);
+      i = end;
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
+
+std::string printable_line(const std::string& text, std::size_t max_chars) {
+  std::string out;
+  std::size_t i = 0;
+  for (; i < text.size() && out.size() < max_chars; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = c >= 0x80 ? utf8_length(text, i) : 1;
+    if (c == '\n' || c == '\r' || c == '\t') {
+      out += ' ';
+    } else if (c < 0x20 || c == 0x7f || n == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out.append(text, i, n);
+      i += n - 1;
+    }
+  }
+  if (i < text.size()) out += "...";
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+namespace {
+
+// Errors are printed as one printable line: a message spanning lines (an exception text quoting
+// a file) would break the "<tool>: error: <what>" contract that scripts grep for, and the bytes
+// of a corrupt file it quotes would reach the terminal raw.
+std::string one_line(const std::string& text) { return printable_line(short_numbers(text), 2000); }
+
 // True when `token` is entirely a number that is not finite ("nan", "-inf", "1e999").
 bool non_finite_number(const std::string& token) {
   if (token.empty()) return false;

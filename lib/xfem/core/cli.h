@@ -27,8 +27,8 @@ std::unique_ptr<Tool> make_tool(const std::string& name, const std::string& desc
 /// or Inf; required options show no default in --help; an unknown subcommand or option gets a
 /// "did you mean" suggestion. Returns the process exit code: 0 on success,
 /// 1 when `body` throws (bad input, failed computation: one line "<tool>: error: <what>" on
-/// stderr), 2 on a usage error (with a hint to try --help). --help and --version print to stdout
-/// and return 0.
+/// stderr), 2 on a usage error (with a hint to try --help); either message passes through
+/// short_numbers() and printable_line(). --help and --version print to stdout and return 0.
 int run(Tool& tool, int argc, char** argv, const std::function<void()>& body);
 
 /// Logging on stderr, prefixed with the tool's name. `info` and `warn` are silenced by -q (which
@@ -59,6 +59,16 @@ void check_output_directory(const std::string& path);
 /// The suggestion for a mistyped `word` among `candidates` (closest by edit distance, at most
 /// about a third of its letters off), or "" when none is close.
 std::string closest(const std::string& word, const std::vector<std::string>& candidates);
+
+/// `text` with every number longer than 20 characters (std::to_string of a large double, e.g.
+/// the 309 digits of DBL_MAX in a CLI11 range check) in short form ("1.79769e+308"), and whole
+/// numbers without std::to_string's ".000000" ("0.000000" -> "0").
+std::string short_numbers(const std::string& text);
+
+/// `text` as one printable line for a message: line breaks and tabs as spaces, other control
+/// bytes and bytes that are not UTF-8 (a corrupt file's, quoted) as "\xNN", trailing spaces
+/// dropped, cut after `max_chars` characters with "...".
+std::string printable_line(const std::string& text, std::size_t max_chars);
 
 /// `v` with three significant digits ("%.3g"): timings, residuals and times in messages.
 std::string three_digits(double v);

@@ -14,6 +14,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLWriter.h>
 
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -21,6 +22,7 @@
 #include <type_traits>
 
 #include "xfem/core/atomic_file.h"
+#include "xfem/core/cli.h"
 #include "xfem/io/vtk_xml_check.h"
 
 namespace xfem {
@@ -57,7 +59,7 @@ Ptr<vtkDataArray> to_vtk_typed(const std::string& name, const DataArray& in, con
     if constexpr (std::is_integral_v<T>) {
       if (!(v == std::floor(v) && v >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
             v <= static_cast<double>(std::numeric_limits<T>::max())))
-        throw Error(where + " array '" + name + "': value " + std::to_string(v) + " at index " +
+        throw Error(where + " array '" + name + "': value " + short_number(v) + " at index " +
                     std::to_string(i) + " is not an integer of its type");
     }
     data[i] = static_cast<T>(v);
@@ -103,6 +105,40 @@ void add_arrays(vtkFieldData* out, const DataArrays& arrays, std::size_t tuples,
 }
 
 }  // namespace
+
+std::string MessageCollector::clean(const char* text) {
+  std::string m = text ? text : "";
+  if (m.rfind("ERROR: In ", 0) == 0 || m.rfind("Warning: In ", 0) == 0) {
+    const auto nl = m.find('\n');
+    m = nl == std::string::npos ? std::string() : m.substr(nl + 1);
+  }
+  // The first line that says something: the rest is an object dump ("Debug: Off", "Modified Time").
+  const auto start = m.find_first_not_of("\r\n");
+  m = start == std::string::npos ? std::string() : m.substr(start, m.find_first_of("\r\n", start) - start);
+  // "vtkXMLUnstructuredGridReader (0x5585...): " before the message, and "Algorithm
+  // vtkXMLUnstructuredGridReader(0x5585...) returned failure" inside it: every address goes.
+  std::string out;
+  for (std::size_t i = 0; i < m.size();) {
+    const bool paren = m.compare(i, 3, "(0x") == 0, bare = m.compare(i, 2, "0x") == 0;
+    if (!paren && !bare) {
+      out += m[i++];
+      continue;
+    }
+    std::size_t end = i + (paren ? 3 : 2);
+    while (end < m.size() && std::isxdigit(static_cast<unsigned char>(m[end]))) ++end;
+    if (end - i < (paren ? 4u : 6u)) {  // "0x1" may be a value VTK quotes; addresses are long
+      out += m[i++];
+      continue;
+    }
+    if (paren && end < m.size() && m[end] == ')') ++end;
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    i = end;
+  }
+  // "<Class>: <message>" after the address went: the class names nothing the user knows.
+  const auto colon = out.find(": ");
+  if (colon != std::string::npos && out.rfind("vtk", 0) == 0 && out.find(' ') > colon) out = out.substr(colon + 2);
+  return cli::printable_line(out, 200);
+}
 
 DataArrays to_arrays(vtkFieldData* in) {
   DataArrays out;

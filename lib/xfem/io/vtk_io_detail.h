@@ -48,27 +48,12 @@ class MessageCollector : public vtkOutputWindow {
   void DisplayDebugText(const char*) override {}
   std::vector<std::string> errors, warnings;
 
- private:
-  // VTK formats "ERROR: In <source file>, line <n>\n<Class> (0x<address>): <message>\n\n".
-  // Keep <message>: the source location means nothing to a user and the address changes
-  // from run to run, which would make error texts non-deterministic.
-  static std::string clean(const char* text) {
-    std::string m = text ? text : "";
-    if (m.rfind("ERROR: In ", 0) == 0 || m.rfind("Warning: In ", 0) == 0) {
-      const auto nl = m.find('\n');
-      m = nl == std::string::npos ? std::string() : m.substr(nl + 1);
-    }
-    const auto address = m.find(" (0x");
-    const auto colon = m.find("): ", address == std::string::npos ? 0 : address);
-    if (address != std::string::npos && colon != std::string::npos && m.find(' ') == address)
-      m = m.substr(colon + 3);
-    // One printable line: VTK quotes the offending input, which may be binary garbage.
-    for (char& c : m)
-      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = c == '\n' ? ' ' : '?';
-    while (!m.empty() && m.back() == ' ') m.pop_back();
-    if (m.size() > 200) m = m.substr(0, 200) + "...";
-    return m;
-  }
+  /// VTK's message `text` as one line for a user: VTK formats "ERROR: In <source file>, line
+  /// <n>\n<Class> (0x<address>): <message>\n\n". Keeps the first line of <message>, without the
+  /// object addresses it names (they change from run to run: error texts must be deterministic,
+  /// and mean nothing to a user), with the bytes of a corrupt input it quotes escaped ("\xNN")
+  /// and at most 200 characters.
+  static std::string clean(const char* text);
 };
 
 // Routes VTK's messages to a MessageCollector for the guard's lifetime and restores the previous

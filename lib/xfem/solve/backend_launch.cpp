@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/solve/backend_launch.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <thread>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "xfem/core/version.h"
 #include "xfem/io/petsc_binary.h"
 #include "xfem/solve/petsc_solver.h"
+#include "xfem/solve/watched_child.h"
 #include "xfem/system/linear_system.h"
 
 namespace xfem {
@@ -39,7 +42,11 @@ std::string petsc_program(const char* argv0, bool links_petsc) {
   return helper.string();
 }
 
-void exec_with_arguments(const std::string& program, int processes, int argc, char** argv) {
+namespace {
+
+// The command line that runs `program` with this process's arguments, under
+// `mpirun -np P` when `processes` > 1 (the ranks see the MPI environment and do not restart again).
+std::vector<std::string> command_line(const std::string& program, int processes, int argc, char** argv) {
   std::vector<std::string> args;
   if (processes > 1) {
     // --quiet: no banner of mpirun's own when a rank exits with an error (the rank's one line says it).
@@ -56,19 +63,57 @@ void exec_with_arguments(const std::string& program, int processes, int argc, ch
   }
   args.push_back(program);
   for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
-  std::vector<char*> cargs;
-  for (auto& a : args) cargs.push_back(a.data());
-  cargs.push_back(nullptr);
   ::setenv("XFEM_OPTIONS_SHOWN", "1", 1);  // -v: this process has printed them (cli.cpp)
-  std::fflush(stderr);
-  if (processes > 1)
-    ::execvp("mpirun", cargs.data());
-  else
-    ::execv(program.c_str(), cargs.data());
+  return args;
+}
+
+// Identifies the file at `path` (or its absence), to tell whether a child wrote it.
+struct FileStamp {
+  bool exists = false;
+  dev_t dev = 0;
+  ino_t ino = 0;
+  timespec mtime{};
+  explicit FileStamp(const std::string& path) {
+    struct stat st;
+    exists = ::stat(path.c_str(), &st) == 0;
+    if (exists) dev = st.st_dev, ino = st.st_ino, mtime = st.st_mtim;
+  }
+  bool operator==(const FileStamp& o) const {
+    return exists == o.exists && dev == o.dev && ino == o.ino && mtime.tv_sec == o.mtime.tv_sec &&
+           mtime.tv_nsec == o.mtime.tv_nsec;
+  }
+};
+
+}  // namespace
+
+std::string run_program(const std::string& program, int processes, int argc, char** argv, const std::string& output) {
+  const std::vector<std::string> args = command_line(program, processes, argc, argv);
+  const std::string what = processes > 1 ? "mpirun -np " + std::to_string(processes) + " " +
+                                               std::filesystem::path(program).filename().string()
+                                         : program;
+  const FileStamp before(output);
+  const WatchedRun run = run_watched(args, processes > 1, "xfem-solve: ");
+  if (!run.started) return run.exec_error;
+  const bool written = output == "-" || (FileStamp(output).exists && !(FileStamp(output) == before));
+  if (!run.signaled && run.status == 0 && written) {
+    for (const std::string& line : run.other_lines) std::cerr << line << "\n";  // e.g. PETSc's warnings
+    std::exit(0);
+  }
+  // The child's own one-line error is the message (Open MPI's follow-up texts add nothing).
+  if (run.printed_error && !run.signaled && run.status != 0) std::exit(run.status);
+  std::string said = first_meaningful_line(run.other_lines);
+  said = said.empty() ? "it printed nothing" : "\"" + said + "\"";
+  const std::string hint = processes > 1 ? " (do the MPI processes start and reach each other? --np 1 or --backend "
+                                           "cholmod solve without mpirun)"
+                                         : " (can Open MPI start? --backend cholmod solves without MPI)";
+  if (!run.signaled && run.status == 0)
+    throw Error(what + " exited 0 without writing " + output + ": " + said +
+                " (is the mpirun on PATH Open MPI's launcher?)");
+  throw Error(what + " failed (" + describe_status(run) + "), no output written: " + said + hint);
 }
 
 std::string launch_backend(const std::string& dir, std::string backend, int processes, bool links_petsc, int argc,
-                           char** argv) {
+                           char** argv, const std::string& output) {
   const bool mpi_child = under_mpirun();
   if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
     // The choice from the system without K (cheap), the same in every rank of a restart.
@@ -89,7 +134,7 @@ std::string launch_backend(const std::string& dir, std::string backend, int proc
                         ", expected 3N x 3N = " + std::to_string(dofs) + " x " + std::to_string(dofs));
         }
         cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
-        exec_with_arguments(program, wanted, argc, argv);
+        run_program(program, wanted, argc, argv, output);
         cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
       }
     }
@@ -97,8 +142,17 @@ std::string launch_backend(const std::string& dir, std::string backend, int proc
   // One process (or one rank of a user's mpirun): the PETSc program takes over with the same
   // arguments; it decides again from the same files, so it comes to the same choice.
   if (!links_petsc && backend == "petsc") {
-    exec_with_arguments(petsc_program(argv[0], links_petsc), 1, argc, argv);
-    throw Error("cannot start " + petsc_program(argv[0], links_petsc) + ": " + std::strerror(errno));
+    const std::string program = petsc_program(argv[0], links_petsc);
+    if (mpi_child) {  // a rank of the user's mpirun: the PETSc program becomes this rank
+      const std::vector<std::string> args = command_line(program, 1, argc, argv);
+      std::vector<char*> cargs;
+      for (const auto& a : args) cargs.push_back(const_cast<char*>(a.c_str()));
+      cargs.push_back(nullptr);
+      std::fflush(stderr);
+      ::execv(program.c_str(), cargs.data());
+      throw Error("cannot start " + program + ": " + std::strerror(errno));
+    }
+    throw Error("cannot start " + program + ": " + run_program(program, 1, argc, argv, output));
   }
   return backend;
 }

@@ -14,10 +14,15 @@ bool under_mpirun();
 /// xfem::Error when the PETSc program is missing or this build has no PETSc.
 std::string petsc_program(const char* argv0, bool links_petsc);
 
-/// Replaces this process by `program` with this process's arguments, optionally under
-/// `mpirun -np P` (the ranks see the MPI environment and do not restart again). Returns only if
-/// the program cannot be started.
-void exec_with_arguments(const std::string& program, int processes, int argc, char** argv);
+/// Runs `program` with this process's arguments as a child, under `mpirun -np P` when
+/// `processes` > 1 (the ranks see the MPI environment and do not restart again), and ends this
+/// process with the child's result: exit 0 when the child exited 0 and wrote `output` ("-":
+/// stdout, not checked); the child's exit status when it printed its own "xfem-solve: error:"
+/// line. Otherwise (it failed silently, was killed, or exited 0 without writing `output`) throws
+/// xfem::Error with its exit status and the first meaningful line of its stderr, which is held
+/// back, not passed through (Open MPI prints dozens of lines for one problem). Returns only
+/// when the program cannot be started: why.
+std::string run_program(const std::string& program, int processes, int argc, char** argv, const std::string& output);
 
 /// xfem-solve's backend for the system directory `dir`: `backend` ("auto", "cholmod" or "petsc")
 /// decided from the system's size when "auto" (without reading K: the same choice in every rank
@@ -26,9 +31,10 @@ void exec_with_arguments(const std::string& program, int processes, int argc, ch
 /// same arguments (falling back to one process, with a warning, when mpirun cannot be started);
 /// when this program does not link PETSc (`links_petsc` false) and the backend is PETSc, the
 /// PETSc program takes over with the same arguments (it decides again from the same files, so it
-/// comes to the same choice). Returns the backend this process runs: "cholmod", or "petsc" when
-/// it links PETSc.
+/// comes to the same choice). Those restarts are checked by run_program() (`output`: the solution
+/// file they must write). Returns the backend this process runs: "cholmod", or "petsc" when it
+/// links PETSc.
 std::string launch_backend(const std::string& dir, std::string backend, int processes, bool links_petsc, int argc,
-                           char** argv);
+                           char** argv, const std::string& output);
 
 }  // namespace xfem
