@@ -111,7 +111,7 @@ TEST_CASE("fingerprint: conflicting or malformed fingerprint lines are refused, 
 }
 
 TEST_CASE("fingerprint: a solution belongs to the mesh, cuts and problem it is read with", "[fingerprint]") {
-  const xfem::TetMesh mesh;  // only its geometry's fingerprint is checked: an empty mesh has one too
+  xfem::TetMesh mesh;  // only its geometry's fingerprint is checked: an empty mesh has one too
   const xfem::TriangleMesh cut = triangle(0.5), other = triangle(0.25);
   const std::string problem = scratch("problem.json"), u = scratch("u_prov.mtx");
   std::ofstream(problem) << "{\"E\": 1}";
@@ -135,10 +135,14 @@ TEST_CASE("fingerprint: a solution belongs to the mesh, cuts and problem it is r
   CHECK_THROWS_WITH(xfem::check_solution_provenance({u, "enriched.vtu", {"cut.vtp"}, scratch("other.json")}, mesh, {&cut}),
                     Catch::StartsWith(u + ": does not belong to " + scratch("other.json") + " (made for the problem"));
   CHECK_NOTHROW(xfem::check_solution_provenance({u, "enriched.vtu", {"cut.vtp"}}, mesh, {&cut}));
-  // Solved without a cut (its record names the mesh only), given one: refused.
+  // Solved without a cut (its record names the mesh only), given one: taken for a mesh classified
+  // without a cut (no enriched DOFs), refused for a mesh classified with it.
   xfem::write_vector(Eigen::Vector3d(1, 2, 3), u, xfem::provenance_comments({{"enriched", xfem::fingerprint(mesh)}}));
+  CHECK_NOTHROW(xfem::check_solution_provenance(files, mesh, {&cut}));
+  xfem::store_fingerprint(mesh.field_data, "cut_fingerprint", xfem::fingerprint(cut));
   CHECK_THROWS_WITH(xfem::check_solution_provenance(files, mesh, {&cut}),
-                    Catch::StartsWith(u + ": does not belong to cut.vtp (solved without a cut"));
+                    Catch::StartsWith(u + ": does not belong to cut.vtp (solved without a cut, but enriched.vtu was "
+                                          "classified with cut.vtp)"));
   // Without fingerprints (another solver's u.mtx): nothing to check.
   xfem::write_vector(Eigen::Vector3d(1, 2, 3), u);
   CHECK_NOTHROW(xfem::check_solution_provenance(files, mesh, {&other}));

@@ -24,7 +24,7 @@ struct SolutionFiles {
 /// "% xfem-fingerprint" lines of `files.solution` (malformed or conflicting lines are errors):
 /// `enriched` must be `mesh`'s; `cut`, `cut_1`, ... those of `cuts` (cut k from files.cuts[k]);
 /// `problem` that of files.problem when given. A cut the solution was solved with but not given,
-/// or given but not solved with, is an error too. A solution without fingerprints (another
+/// or given (and recorded by the mesh as classified with) but not solved with, is an error too. A solution without fingerprints (another
 /// solver's, or older) passes. Throws xfem::Error "<u.mtx>: ..." naming both files.
 void check_solution_provenance(const SolutionFiles& files, const TetMesh& mesh,
                                const std::vector<const TriangleMesh*>& cuts);
