@@ -14,6 +14,7 @@
 #include "xfem/system/problem.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/fracture/stress_intensity.h"
+#include "xfem/post/solution_provenance_check.h"
 
 namespace {
 
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
     xfem::require_linear_material(problem, "xfem-front's interaction integral is small-strain");
     std::vector<std::string> warnings;
     xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
+    xfem::check_solution_provenance({solution, input, cut_paths, problem_path}, em);  // before select_front_of
     xfem::select_front_of(em, front_of, input);
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");

@@ -8,6 +8,7 @@
 #include "xfem/io/matrix_market.h"
 #include "xfem/post/point_probe.h"
 #include "xfem/post/rms_error.h"
+#include "xfem/post/solution_provenance_check.h"
 #include "xfem/io/vtk_io.h"
 
 int main(int argc, char** argv) {
@@ -44,12 +45,14 @@ int main(int argc, char** argv) {
       if (u.size() != 3 * enriched.n)
         throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3N = " +
                           std::to_string(3 * enriched.n) + " for " + mesh_path);
+      xfem::check_solution_provenance({solution, mesh_path, {cut_path}}, enriched);
       field = xfem::xfem_field(enriched, u, radius);
     } else {
       const Eigen::Index np = plain.points.rows();
       if (u.size() != 3 * np)
         throw xfem::Error(solution + ": " + std::to_string(u.size()) + " values, expected 3 x " +
                           std::to_string(np) + " for the points of " + mesh_path);
+      xfem::check_solution_provenance({solution, mesh_path}, plain, {});
       nodal = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(u.data(), np, 3);
       field = xfem::plain_field(plain, nodal, radius);
     }

@@ -6,6 +6,7 @@
 #include "xfem/core/cli.h"
 #include "xfem/post/deformed_mesh.h"
 #include "xfem/post/deformed_volume.h"
+#include "xfem/post/solution_provenance_check.h"
 #include "xfem/geometry/element_split.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/core/error.h"
@@ -97,13 +98,7 @@ int main(int argc, char** argv) {
         throw xfem::Error(reactions_path + ": " + std::to_string(reactions.size()) + " values, expected 3N = " +
                           std::to_string(3 * em.n) + " for " + input);
     }
-    const xfem::Provenance made_for = xfem::read_mtx_provenance(solution);
-    xfem::check_provenance(made_for, solution, "enriched", xfem::fingerprint(em.mesh), input);
-    if (em.cut) xfem::check_provenance(made_for, solution, "cut", xfem::fingerprint(em.cut->mesh()), cut_path);
-    for (std::size_t k = 1; k < em.cuts.size(); ++k)
-      xfem::check_provenance(made_for, solution, "cut_" + std::to_string(k), xfem::fingerprint(em.cuts[k].cut->mesh()),
-                             cut_paths.size() == em.cuts.size() ? cut_paths[k] : cut_path);
-    xfem::check_provenance(made_for, solution, "problem", xfem::fingerprint_json_file(problem_path), problem_path);
+    xfem::check_solution_provenance({solution, input, cut_paths, problem_path}, em);
 
     const xfem::SplitMesh split = xfem::split_mesh(em);
     xfem::cli::info(std::to_string(split.split_complete) + " elements split through, " +

@@ -7,6 +7,7 @@
 
 #include "xfem/core/error.h"
 #include "xfem/io/matrix_market.h"
+#include "xfem/post/solution_provenance_check.h"
 
 namespace {
 std::string scratch(const std::string& name) {
@@ -90,4 +91,59 @@ TEST_CASE("fingerprint: a solution records its provenance in Matrix Market comme
                     Catch::StartsWith("u.mtx: does not belong to other.vtu (made for the enriched"));
   std::ofstream(path) << "%%MatrixMarket matrix array real general\n% xfem-fingerprint enriched 12\n1 1\n0\n";
   CHECK_THROWS_WITH(xfem::read_mtx_provenance(path), Catch::Contains("malformed fingerprint line"));
+}
+
+TEST_CASE("fingerprint: conflicting or malformed fingerprint lines are refused, naming the file", "[fingerprint]") {
+  const std::string path = scratch("lines.mtx");
+  const auto header = [&](const std::string& lines) {
+    std::ofstream(path) << "%%MatrixMarket matrix array real general\n" << lines << "1 1\n0\n";
+  };
+  header("% xfem-fingerprint cut fnv1a64:0000000000000001\n% xfem-fingerprint cut fnv1a64:0000000000000002\n");
+  CHECK_THROWS_WITH(xfem::read_mtx_provenance(path),
+                    Catch::StartsWith(path + ": conflicting fingerprint lines for 'cut' (fnv1a64:0000000000000001 and "
+                                             "fnv1a64:0000000000000002)"));
+  header("% xfem-fingerprint cut fnv1a64:0000000000000001\n% xfem-fingerprint cut fnv1a64:0000000000000001\n");
+  CHECK(xfem::read_mtx_provenance(path) == xfem::Provenance{{"cut", 1}});  // the same value twice: no conflict
+  header("% xfem-fingerprint  fnv1a64:0000000000000001\n");  // no name
+  CHECK_THROWS_WITH(xfem::read_mtx_provenance(path), Catch::StartsWith(path + ": malformed fingerprint line"));
+  header("% xfem-fingerprint cut fnv1a64:\x01\xff" "00000000000000\n");  // raw bytes are not echoed
+  CHECK_THROWS_WITH(xfem::read_mtx_provenance(path), Catch::Contains("fnv1a64:??00000000000000'"));
+}
+
+TEST_CASE("fingerprint: a solution belongs to the mesh, cuts and problem it is read with", "[fingerprint]") {
+  xfem::TetMesh mesh;  // only its geometry's fingerprint is checked: an empty mesh has one too
+  const xfem::TriangleMesh cut = triangle(0.5), other = triangle(0.25);
+  const std::string problem = scratch("problem.json"), u = scratch("u_prov.mtx");
+  std::ofstream(problem) << "{\"E\": 1}";
+  const xfem::Provenance made_for{{"enriched", xfem::fingerprint(mesh)},
+                                  {"cut", xfem::fingerprint(cut)},
+                                  {"problem", xfem::fingerprint_json_file(problem)}};
+  xfem::write_vector(Eigen::Vector3d(1, 2, 3), u, xfem::provenance_comments(made_for));
+  const xfem::SolutionFiles files{u, "enriched.vtu", {"cut.vtp"}, problem};
+  CHECK_NOTHROW(xfem::check_solution_provenance(files, mesh, {&cut}));
+  CHECK_THROWS_WITH(xfem::check_solution_provenance(files, mesh, {&other}),
+                    Catch::StartsWith(u + ": does not belong to cut.vtp (made for the cut"));
+  // Solved with a cut, read without it: refused, unless only the standard DOFs are read.
+  xfem::SolutionFiles plain{u, "classified.vtu"};
+  CHECK_THROWS_WITH(xfem::check_solution_provenance(plain, mesh, {}),
+                    Catch::StartsWith(u + ": solved with a cut (cut fnv1a64:") &&
+                        Catch::EndsWith("but classified.vtu is given without it"));
+  plain.standard_dofs_only = true;
+  CHECK_NOTHROW(xfem::check_solution_provenance(plain, mesh, {}));
+  // Another problem; no problem given (the reader does not use it): not checked.
+  std::ofstream(scratch("other.json")) << "{\"E\": 2}";
+  CHECK_THROWS_WITH(xfem::check_solution_provenance({u, "enriched.vtu", {"cut.vtp"}, scratch("other.json")}, mesh, {&cut}),
+                    Catch::StartsWith(u + ": does not belong to " + scratch("other.json") + " (made for the problem"));
+  CHECK_NOTHROW(xfem::check_solution_provenance({u, "enriched.vtu", {"cut.vtp"}}, mesh, {&cut}));
+  // Solved without a cut (its record names the mesh only), given one: taken for a mesh classified
+  // without a cut (no enriched DOFs), refused for a mesh classified with it.
+  xfem::write_vector(Eigen::Vector3d(1, 2, 3), u, xfem::provenance_comments({{"enriched", xfem::fingerprint(mesh)}}));
+  CHECK_NOTHROW(xfem::check_solution_provenance(files, mesh, {&cut}));
+  xfem::store_fingerprint(mesh.field_data, "cut_fingerprint", xfem::fingerprint(cut));
+  CHECK_THROWS_WITH(xfem::check_solution_provenance(files, mesh, {&cut}),
+                    Catch::StartsWith(u + ": does not belong to cut.vtp (solved without a cut, but enriched.vtu was "
+                                          "classified with cut.vtp)"));
+  // Without fingerprints (another solver's u.mtx): nothing to check.
+  xfem::write_vector(Eigen::Vector3d(1, 2, 3), u);
+  CHECK_NOTHROW(xfem::check_solution_provenance(files, mesh, {&other}));
 }

@@ -33,6 +33,13 @@ Fingerprint geometry(const Points& points, const Ids& ids) {
   return h;
 }
 
+// A header line as it can be quoted in a one-line message: control and non-ASCII bytes as '?'.
+std::string printable(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
+  return text;
+}
+
 }  // namespace
 
 Fingerprint fnv1a64(const void* data, std::size_t bytes, Fingerprint seed) {
@@ -140,9 +147,15 @@ Provenance read_mtx_provenance(const std::string& path) {
     Fingerprint v = 0;
     std::string value = space == std::string::npos ? "" : rest.substr(space + 1);
     while (!value.empty() && (value.back() == '\r' || value.back() == ' ')) value.pop_back();
-    if (space == std::string::npos || !parse_fingerprint(value, &v))
-      throw Error(path + ": malformed fingerprint line '" + line.substr(0, 80) + "'");
-    p[rest.substr(0, space)] = v;
+    if (space == 0 || space == std::string::npos || !parse_fingerprint(value, &v))
+      throw Error(path + ": malformed fingerprint line '" + printable(line.substr(0, 80)) +
+                  "' (expected '% xfem-fingerprint <name> fnv1a64:<16 hex digits>')");
+    const std::string name = rest.substr(0, space);
+    // The same name twice with two values: one of them was edited, neither can be trusted.
+    const auto [it, inserted] = p.emplace(name, v);
+    if (!inserted && it->second != v)
+      throw Error(path + ": conflicting fingerprint lines for '" + printable(name) + "' (" + to_string(it->second) +
+                  " and " + to_string(v) + ")");
   }
   return p;
 }

@@ -60,7 +60,9 @@ Json provenance_json(const Provenance& p);
 Provenance provenance_from_json(const Json& j, const std::string& file);
 /// The comment lines for a Matrix Market file (without the trailing newline).
 std::vector<std::string> provenance_comments(const Provenance& p);
-/// The "% xfem-fingerprint" lines of a Matrix Market file's header (empty if none).
+/// The "% xfem-fingerprint" lines of a Matrix Market file's header (empty if none). Throws
+/// "<path>: malformed fingerprint line '...'" for a line that is not "<name> fnv1a64:<hex>" and
+/// "<path>: conflicting fingerprint lines for '<name>' (...)" for a name given two values.
 Provenance read_mtx_provenance(const std::string& path);
 
 /// Throws "<file>: made for <what> <expected_file> ... but given <given_file>" when `recorded`

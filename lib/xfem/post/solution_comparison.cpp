@@ -6,13 +6,13 @@
 
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
-#include "xfem/core/fingerprint.h"
 #include "xfem/core/version.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/io/matrix_market.h"
 #include "xfem/io/vtk_io.h"
 #include "xfem/post/exact_error.h"
 #include "xfem/post/rms_error.h"
+#include "xfem/post/solution_provenance_check.h"
 #include "xfem/system/problem.h"
 
 namespace xfem {
@@ -20,17 +20,26 @@ namespace {
 
 using Field = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-// Nodal displacements of a plain mesh: the first NP 3-vectors of a solution vector, or the point
-// array `displacement` when no solution file is given.
-Field nodal_displacements(const TetMesh& mesh, const std::string& mesh_path, const std::string& solution) {
+// Nodal displacements of a plain mesh: a solution vector of 3 NP values, or the point array
+// `displacement` when no solution file is given. An X-FEM solution (N > NP) needs its mesh's cut
+// to be evaluated: its first NP vectors alone are not the displacement, unless `standard_dofs_only`
+// asks for exactly those (a regression check of the solve's values).
+Field nodal_displacements(const TetMesh& mesh, const std::string& mesh_path, const std::string& solution,
+                          bool standard_dofs_only) {
   const Eigen::Index np = mesh.points.rows();
   Field u(np, 3);
   if (!solution.empty()) {
-    check_provenance(read_mtx_provenance(solution), solution, "enriched", fingerprint(mesh), mesh_path);
     const Eigen::VectorXd v = read_vector(solution);
     if (v.size() < 3 * np || v.size() % 3 != 0)
       throw Error(solution + ": " + std::to_string(v.size()) + " values, expected 3 per vector and at least " +
                   std::to_string(3 * np) + " for the " + std::to_string(np) + " points of " + mesh_path);
+    if (v.size() > 3 * np && !standard_dofs_only)
+      throw Error(mesh_path + ": given without the cut its solution " + solution + " needs (" +
+                  std::to_string(v.size() / 3 - np) + " enriched displacements beyond its " + std::to_string(np) +
+                  " points would be dropped): compare the X-FEM mesh with its cut, or its xfem-visualize output");
+    SolutionFiles files{solution, mesh_path};
+    files.standard_dofs_only = standard_dofs_only;
+    check_solution_provenance(files, mesh, {});
     for (Eigen::Index k = 0; k < np; ++k) u.row(k) = v.segment<3>(3 * k).transpose();
     return u;
   }
@@ -50,10 +59,7 @@ std::vector<int> sides_of(const TetMesh& mesh) {
 
 // Checks a solution against the X-FEM mesh and cut it is evaluated on (its recorded fingerprints).
 void check_solution(const ComparedSolution& s, const EnrichedMesh& em) {
-  check_cut_matches(em.mesh, s.mesh, em.cut->mesh(), s.cut);
-  const Provenance made_for = read_mtx_provenance(s.solution);
-  check_provenance(made_for, s.solution, "enriched", fingerprint(em.mesh), s.mesh);
-  check_provenance(made_for, s.solution, "cut", fingerprint(em.cut->mesh()), s.cut);
+  check_solution_provenance({s.solution, s.mesh, {s.cut}}, em);
 }
 
 // An X-FEM solution's u, which must hold 3N values.
@@ -119,7 +125,7 @@ Json compare_with_exact(const ComparedSolution& s, const std::string& exact_path
 Json compare_with_reference(const ComparedSolution& s, const std::string& reference,
                             const std::string& reference_solution, double radius) {
   const TetMesh ref_mesh = read_tet_mesh(reference);
-  const ReferenceSamples ref{ref_mesh.points, nodal_displacements(ref_mesh, reference, reference_solution),
+  const ReferenceSamples ref{ref_mesh.points, nodal_displacements(ref_mesh, reference, reference_solution, s.standard_dofs_only),
                              sides_of(ref_mesh)};
 
   TetMesh plain;
@@ -141,7 +147,7 @@ Json compare_with_reference(const ComparedSolution& s, const std::string& refere
     u = read_xfem_solution(s, enriched);
     field = xfem_field(enriched, u, radius);
   } else {
-    plain_u = nodal_displacements(plain, s.mesh, s.solution);
+    plain_u = nodal_displacements(plain, s.mesh, s.solution, s.standard_dofs_only);
     field = plain_field(plain, plain_u, radius);
   }
   const RmsReport r = rms_error(ref, field);
