@@ -109,13 +109,18 @@ int main(int argc, char** argv) {
     // What the system was made from, so that xfem-solve can record it in u.mtx and later stages
     // can check the solution against the mesh, cut and problem they are given.
     const xfem::Provenance provenance = xfem::solution_provenance(em, problem_path);
-    const std::string provenance_path = (std::filesystem::path(output) / "provenance.json").string();
-    xfem::write_linear_system(system, output, std::string("xfem-assemble ") + xfem::version,
-                              format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc);
-    // Written into the finished directory: which condition fixes which DOF (xfem-solve sums the
-    // reaction forces per condition; one total without it) and the fingerprints.
-    xfem::write_dirichlet_groups(xfem::dirichlet_groups(em.mesh, problem), output, std::string("xfem-assemble ") + xfem::version);
-    xfem::write_json(xfem::Json{{"fingerprints", xfem::provenance_json(provenance)}}, provenance_path);
+    const xfem::DirichletGroups groups = xfem::dirichlet_groups(em.mesh, problem);
+    const std::string generator = std::string("xfem-assemble ") + xfem::version;
+    // Written into the temporary directory with the system, before system.json and its manifest
+    // (a kill cannot leave a system without them): which condition fixes which DOF (xfem-solve
+    // sums the reaction forces per condition) and the fingerprints.
+    xfem::write_linear_system(system, output, generator,
+                              format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc,
+                              [&](const std::string& tmp) {
+                                xfem::write_dirichlet_groups(groups, tmp, generator);
+                                xfem::write_json(xfem::Json{{"fingerprints", xfem::provenance_json(provenance)}},
+                                                 (std::filesystem::path(tmp) / "provenance.json").string());
+                              });
     const double write = xfem::cli::now() - write_start;
 
     long constrained = 0;

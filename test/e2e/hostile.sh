@@ -34,14 +34,39 @@ grep -q "^% xfem-fingerprint enriched fnv1a64:" "$S/u.mtx" || fail "u.mtx record
 sed 's/"E": 300e3/"E": 400e3/' "$PROBLEM" >"$S/stiffer.json"
 "$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" --format mtx -o "$S/system2" || fail "assemble 2"
 "$B/xfem-solve" -q "$S/system2" -o "$S/u2.mtx" || fail "solve 2"
-for delay in 0.2 0.5 1 2; do
+# Kills spread over the run, most of them near its end, where the files are written and the
+# directory is swapped in (provenance.json and dirichlet_conditions.json once came after the swap:
+# a kill there left a system whose u.mtx carried no fingerprints).
+t0=$(date +%s.%N)
+"$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" --format mtx -o "$S/system3" || fail "assemble 3"
+run=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
+for fraction in 0.1 0.5 0.8 0.9 0.95 0.98 1.0 1.02 1.05 1.1 2; do
+  delay=$(awk -v r="$run" -v f="$fraction" 'BEGIN { print r * f }')
   rm -rf "$S/killed"; cp -r "$S/system" "$S/killed"
   ( timeout -s KILL "$delay" "$B/xfem-assemble" -q "$S/enriched.vtu" --cut "$S/cut.vtp" --problem "$S/stiffer.json" \
     --format mtx -o "$S/killed" ) 2>/dev/null
   "$B/xfem-solve" -q "$S/killed" -o "$S/u_killed.mtx" || fail "the system directory after a kill at $delay s is unreadable"
   cmp -s "$S/u_killed.mtx" "$S/u.mtx" || cmp -s "$S/u_killed.mtx" "$S/u2.mtx" \
     || fail "after a kill at $delay s the system directory is neither the old nor the new system"
+  grep -q "^% xfem-fingerprint problem fnv1a64:" "$S/u_killed.mtx" \
+    || fail "after a kill at $delay s the solution records no fingerprints (provenance.json missing)"
 done
+# Every state a kill in the old order could leave, and any file lost since: a system missing one
+# of its files (provenance.json and dirichlet_conditions.json included) is refused, naming it.
+for f in K.mtx f.mtx dirichlet.mtx coordinates.mtx provenance.json dirichlet_conditions.json; do
+  [ -e "$S/system/$f" ] || fail "the system has no $f"
+  rm -rf "$S/lost"; cp -r "$S/system" "$S/lost"; rm "$S/lost/$f"
+  "$B/xfem-solve" -q "$S/lost" -o "$S/n.mtx" 2>"$S/err.txt" && fail "a system without $f was solved"
+  [ "$(wc -l <"$S/err.txt")" -eq 1 ] && grep -qF "lost/$f" "$S/err.txt" || fail "without $f: $(cat "$S/err.txt")"
+  absent "$S/n.mtx"
+done
+rm -rf "$S/lost"; cp -r "$S/system" "$S/lost"; rm "$S/lost/provenance.json" "$S/lost/dirichlet_conditions.json"
+expect 1 "lost/dirichlet_conditions.json: missing, but listed in system.json's manifest" "$B/xfem-solve" "$S/lost" -o "$S/n.mtx"
+# A file of another assembly (E 400e3 instead of 300e3) put into the system: refused.
+rm -rf "$S/mixed"; cp -r "$S/system" "$S/mixed"; cp "$S/system2/K.mtx" "$S/mixed/K.mtx"
+expect 1 "mixed/K.mtx: " "$B/xfem-solve" "$S/mixed" -o "$S/n.mtx"
+grep -qF "system.json's manifest" "$S/err.txt" || fail "mixed K: $(cat "$S/err.txt")"
+absent "$S/n.mtx"
 rm -rf "$S/partial"; cp -r "$S/system" "$S/partial"; rm "$S/partial/system.json"
 expect 1 "partial: no system.json, the marker xfem-assemble writes last: the directory is incomplete" \
   "$B/xfem-solve" "$S/partial" -o "$S/n.mtx"

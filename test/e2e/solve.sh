@@ -15,6 +15,7 @@ expect_error() {  # expect_error <text> <args...>: exit 1, "error:" and <text> o
   [ ! -e "$S/bad.mtx" ] || fail "output left behind for $*"
 }
 maxdiff() { paste <(tail -n +3 "$1") <(tail -n +3 "$2") | awk '{d=$1-$2; if(d<0)d=-d; if(d>m)m=d} END{printf "%.3g\n", m+0}'; }
+remanifest() { python3 "$XFEM_SOURCE/test/e2e/remanifest.py" "$1" || fail "remanifest $1"; }  # after a deliberate edit
 
 "$SOLVE" --help >/dev/null || fail "--help"
 "$SOLVE" --no-such-flag 2>/dev/null; [ $? -eq 2 ] || fail "bad flag must exit 2"
@@ -36,13 +37,13 @@ awk 'NR==FNR{want[$1]=$3; next} FNR>2 && ((FNR-2) in want) && $1+0 != want[FNR-2
 grep -c '^0.02$' "$S/u.mtx" | grep -qx 3 || fail "expected the 3 pulled-edge nodes (x = 0, z = 0.2) at exactly 0.02"
 
 # Singular cases.
-cp -r "$DATA/beam_1x2x4" "$S/free"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 0\n' >"$S/free/dirichlet.mtx"
+cp -r "$DATA/beam_1x2x4" "$S/free"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 0\n' >"$S/free/dirichlet.mtx"; remanifest "$S/free"
 expect_error "no Dirichlet condition" "$S/free"
 cp -r "$DATA/beam_1x2x4" "$S/loose"
 sed -i '/"pieces"/,$d' "$S/loose/system.json"
-printf '  "pieces": [{"tets": 48, "constrained": true}, {"tets": 1234, "constrained": false}]\n}\n' >>"$S/loose/system.json"
+printf '  "pieces": [{"tets": 48, "constrained": true}, {"tets": 1234, "constrained": false}]\n}\n' >>"$S/loose/system.json"; remanifest "$S/loose"
 expect_error "the body falls apart into 2 pieces; piece 2 (1234 tets) has no Dirichlet condition" "$S/loose"
-cp -r "$DATA/beam_1x2x4" "$S/onenode"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 3\n1 1 0\n2 1 0\n3 1 0\n' >"$S/onenode/dirichlet.mtx"
+cp -r "$DATA/beam_1x2x4" "$S/onenode"; printf '%%%%MatrixMarket matrix coordinate real general\n90 1 3\n1 1 0\n2 1 0\n3 1 0\n' >"$S/onenode/dirichlet.mtx"; remanifest "$S/onenode"
 expect_error "K is not positive definite at DOF" "$S/onenode"
 "$SOLVE" "$DATA/beam_1x2x4_tiny" -o "$S/u_tiny.mtx" 2>"$S/err.txt" || fail "tiny support must still solve"
 grep -q "warning: 3 enriched DOFs have a diagonal below" "$S/err.txt" || fail "no tiny-support warning: $(cat "$S/err.txt")"
@@ -53,7 +54,7 @@ grep -q "dropped 3 enriched DOFs" "$S/err.txt" || fail "no drop message"
 # Exactly zero enriched rows (no support): eliminated without a flag, one warning, the rest of the
 # solution unchanged (the zero DOF is absent from the energy, so u equals the beam_1x2x4 one).
 cp -r "$DATA/beam_1x2x4_tiny" "$S/zero"
-awk 'NR<=2 {print; next} $1>=91 || $2>=91 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4_tiny/K.mtx" >"$S/zero/K.mtx"
+awk 'NR<=2 {print; next} $1>=91 || $2>=91 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4_tiny/K.mtx" >"$S/zero/K.mtx"; remanifest "$S/zero"
 "$SOLVE" "$S/zero" -o "$S/u_zero.mtx" --report "$S/zero.json" 2>"$S/err.txt" || fail "zero rows must solve: $(cat "$S/err.txt")"
 [ "$(grep -c warning "$S/err.txt")" -eq 1 ] || fail "expected one warning line: $(cat "$S/err.txt")"
 grep -qF "warning: 3 enriched DOFs (1 vector) have an exactly zero row in K (no support on one side of the cut): fixed to 0; first DOF 90 (vector 30, sign-enriched vector 0 of 1, component x)" \
@@ -63,7 +64,7 @@ grep -q '"unsupported_enriched_dofs": 3' "$S/zero.json" || fail "report must cou
 d=$(maxdiff <(head -n 92 "$S/u_zero.mtx") "$S/u.mtx"); awk -v d="$d" 'BEGIN{exit !(d < 1e-14)}' || fail "zero DOF changed the solution by $d"
 # ... while a zero row on a free ORIGINAL DOF (1-based row 40) stays an error.
 cp -r "$DATA/beam_1x2x4" "$S/zero_orig"
-awk 'NR<=2 {print; next} $1==40 || $2==40 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4/K.mtx" >"$S/zero_orig/K.mtx"
+awk 'NR<=2 {print; next} $1==40 || $2==40 {print $1, $2, 0; next} {print}' "$DATA/beam_1x2x4/K.mtx" >"$S/zero_orig/K.mtx"; remanifest "$S/zero_orig"
 expect_error "K has an exactly zero row at DOF 39 (vector 13, original, mesh point 13, component x)" "$S/zero_orig"
 
 # Wrong-kind inputs: a mesh instead of the directory, a mesh renamed K.mtx.
@@ -72,6 +73,19 @@ expect_error "mesh.vtu: not a directory (expected the system directory written b
 cp -r "$DATA/beam_1x2x4" "$S/wrong_kind"; cp "$S/mesh.vtu" "$S/wrong_kind/K.mtx"
 expect_error "K.mtx: not a Matrix Market file" "$S/wrong_kind"
 grep -qF "(is this xfem-assemble output?)" "$S/err.txt" || fail "wrong-kind K.mtx: no hint: $(cat "$S/err.txt")"
+
+# Files that no longer belong together (system.json's manifest, docs/FORMATS.md "system/"): the
+# last prescribed value truncated (0.02 -> 0.0, still a valid file), K from another system of the
+# same size, a directory written before manifests existed: each refused, naming the file.
+cp -r "$DATA/beam_1x2x4" "$S/trunc_d"; sed -i '$ s/0\.02$/0.0/' "$S/trunc_d/dirichlet.mtx"
+expect_error "trunc_d/dirichlet.mtx: 323 bytes, but system.json's manifest says 324" "$S/trunc_d"
+cp -r "$DATA/beam_1x2x4" "$S/other_k"
+awk 'NR > 2 && !done && $3 ~ /^[0-9]/ { $3 = "9" substr($3, 2); done = 1 } { print }' "$DATA/beam_1x2x4/K.mtx" >"$S/other_k/K.mtx"
+cmp -s "$S/other_k/K.mtx" "$DATA/beam_1x2x4/K.mtx" && fail "other_k: K.mtx unchanged"
+[ "$(stat -c %s "$S/other_k/K.mtx")" = "$(stat -c %s "$DATA/beam_1x2x4/K.mtx")" ] || fail "other_k: K.mtx changed size"
+expect_error "other_k/K.mtx: content differs from system.json's manifest" "$S/other_k"
+cp -r "$DATA/beam_1x2x4" "$S/old"; python3 -c 'import json, sys; p = sys.argv[1]; j = json.load(open(p)); del j["files"]; json.dump(j, open(p, "w"))' "$S/old/system.json"
+expect_error "old/system.json: no manifest of the system's files" "$S/old"
 
 # PETSc: agrees with CHOLMOD within its tolerance, on 1 and 2 MPI ranks.
 if ! "$SOLVE" --version | grep -q petsc; then

@@ -196,3 +196,91 @@ TEST_CASE("linear_system: the directory appears whole or not at all", "[linear_s
   xfem::write_linear_system(small_system(), dir + "/", "test 0");
   CHECK(fs::exists(fs::path(dir) / "system.json"));
 }
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// What xfem-assemble adds to a system: files written into the temporary directory by write_more.
+void write_extras(const std::string& tmp) {
+  overwrite((fs::path(tmp) / "provenance.json").string(), "{\"fingerprints\": {}}\n");
+  overwrite((fs::path(tmp) / "dirichlet_conditions.json").string(), "{\"conditions\": []}\n");
+}
+
+}  // namespace
+
+TEST_CASE("linear_system: system.json's manifest ties the files of the directory together", "[linear_system]") {
+  using Catch::Matchers::Contains;
+  const auto dir = scratch_dir("system_manifest");
+  const auto mtx = xfem::SystemFormat::MatrixMarket;
+  const auto file = [&](const char* name) { return (fs::path(dir) / name).string(); };
+
+  // The extra files written by write_more are in the directory and in the manifest.
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx, write_extras);
+  const xfem::Json manifest = xfem::read_json(file("system.json")).at("files");
+  for (const char* name : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "provenance.json",
+                           "dirichlet_conditions.json"}) {
+    INFO(name);
+    REQUIRE(manifest.contains(name));
+    CHECK(manifest[name]["bytes"].get<long>() == static_cast<long>(fs::file_size(file(name))));
+  }
+  CHECK(manifest.size() == 6);
+  CHECK_NOTHROW(xfem::read_linear_system(dir));
+
+  // A prescribed value truncated (0.02 -> 0.0) still parses: the manifest catches it.
+  std::string text = read_text(file("dirichlet.mtx"));
+  REQUIRE(text.find("0.02\n") != std::string::npos);
+  text.replace(text.find("0.02\n"), 5, "0.0\n");
+  overwrite(file("dirichlet.mtx"), text);
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir),
+                    Contains("dirichlet.mtx: ") && Contains("bytes, but system.json's manifest says") &&
+                        Contains("assemble again"));
+
+  // A K of the same size from another assembly (twice as stiff): same bytes count, other content.
+  const auto other = scratch_dir("system_manifest_other");
+  xfem::LinearSystem stiffer = small_system();
+  stiffer.K *= 2.0;
+  xfem::write_linear_system(small_system(), dir, "test 0", xfem::SystemFormat::Petsc, write_extras);
+  xfem::write_linear_system(stiffer, other, "test 0", xfem::SystemFormat::Petsc, write_extras);
+  REQUIRE(fs::file_size(file("K.petsc")) == fs::file_size(fs::path(other) / "K.petsc"));
+  fs::copy_file(fs::path(other) / "K.petsc", file("K.petsc"), fs::copy_options::overwrite_existing);
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("K.petsc: content differs from system.json's manifest"));
+  // The PETSc backend's read (without K) checks it too.
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir, false), Contains("K.petsc: content differs"));
+
+  // A listed file missing (a kill before provenance.json was written, as xfem-assemble once could).
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx, write_extras);
+  fs::remove(file("provenance.json"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("provenance.json: missing, but listed in system.json's manifest"));
+  // A system file not listed (written after the system, or copied in from another).
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx);
+  write_extras(dir);
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("dirichlet_conditions.json: not in system.json's manifest"));
+
+  // The manifest tampered with: a changed hash, a malformed entry, none at all (an older system).
+  xfem::write_linear_system(small_system(), dir, "test 0", mtx, write_extras);
+  xfem::Json j = xfem::read_json(file("system.json"));
+  const xfem::Json original = j;
+  j["files"]["f.mtx"]["content"] = "fnv1a64:0123456789abcdef";
+  xfem::write_json(j, file("system.json"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("f.mtx: content differs from system.json's manifest"));
+  j = original;
+  j["files"]["f.mtx"]["bytes"] = "many";
+  xfem::write_json(j, file("system.json"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("system.json: manifest entry 'f.mtx' is not"));
+  j = original;
+  j["files"]["../elsewhere"] = original["files"]["f.mtx"];
+  xfem::write_json(j, file("system.json"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("system.json: manifest entry '../elsewhere' is not"));
+  j = original;
+  j.erase("files");
+  xfem::write_json(j, file("system.json"));
+  CHECK_THROWS_WITH(xfem::read_linear_system(dir), Contains("system.json: no manifest of the system's files") &&
+                                                       Contains("assemble again"));
+  // Restored, it reads again: the checks above refused the changes, not the directory.
+  xfem::write_json(original, file("system.json"));
+  CHECK_NOTHROW(xfem::read_linear_system(dir));
+}

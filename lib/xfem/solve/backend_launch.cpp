@@ -117,7 +117,9 @@ std::string launch_backend(const std::string& dir, std::string backend, int proc
   const bool mpi_child = under_mpirun();
   if (backend == "auto" || (backend == "petsc" && !mpi_child)) {
     // The choice from the system without K (cheap), the same in every rank of a restart.
-    const LinearSystem head = read_linear_system(dir, false);
+    // No manifest check here: the process that solves reads the system again and checks it (each
+    // PETSc rank before it loads its rows of K), and an mtx K's own errors come first there.
+    const LinearSystem head = read_linear_system(dir, false, false);
     const long dofs = 3 * head.n;
     if (backend == "auto") backend = processes > 1 ? "petsc" : automatic_backend(dofs, head.n > head.np);
     if (backend == "petsc" && !mpi_child) {

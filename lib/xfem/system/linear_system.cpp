@@ -9,9 +9,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/core/fingerprint.h"
 #include "xfem/io/petsc_binary.h"
 
 namespace xfem {
@@ -146,8 +148,71 @@ void move_into_place(const fs::path& tmp, const fs::path& target) {
   fs::remove_all(old, ec);
 }
 
+// fnv1a64 of a file's bytes, read in blocks (K can be gigabytes).
+Fingerprint file_fingerprint(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open for reading");
+  std::vector<char> block(1 << 20);
+  Fingerprint h = fnv1a64(nullptr, 0);
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    h = fnv1a64(block.data(), static_cast<std::size_t>(in.gcount()), h);
+  }
+  if (in.bad()) throw Error(path.string() + ": cannot read");
+  return h;
+}
+
+// The manifest of the files in `dir` but system.json: name -> size and content hash. It ties
+// the files to each other: a file truncated, edited or taken from another assembly no longer
+// matches the system.json written with it.
+Json file_manifest(const fs::path& dir) {
+  Json files = Json::object();
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "system.json") continue;
+    files[name] = Json{{"bytes", static_cast<long>(entry.file_size())}, {"content", to_string(file_fingerprint(entry.path()))}};
+  }
+  return files;
+}
+
+// Checks the files of `dir` against the manifest of its system.json (`j`, read from `json_path`).
+void check_files(const std::string& dir, const Json& j, const std::string& json_path) {
+  if (!j.contains("files"))
+    throw Error(json_path + ": no manifest of the system's files (written by an older xfem-assemble, or not by "
+                "xfem-assemble): nothing ties its files together; assemble again");
+  const Json& files = j["files"];
+  if (!files.is_object()) throw Error(json_path + ": key 'files' (the manifest) is not an object" + kHint);
+  for (const auto& [name, entry] : files.items()) {
+    Fingerprint recorded = 0;
+    if (!is_system_file(name) || name == "system.json" || !entry.is_object() || !entry.contains("bytes") ||
+        !entry["bytes"].is_number_integer() || !entry.contains("content") || !entry["content"].is_string() ||
+        !parse_fingerprint(entry["content"].get<std::string>(), &recorded))
+      throw Error(json_path + ": manifest entry '" + name + "' is not a system file with integer 'bytes' and "
+                  "'content' fnv1a64:<16 hex digits>" + kHint);
+    const fs::path path = fs::path(dir) / name;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+      throw Error(path.string() + ": missing, but listed in system.json's manifest (the directory is incomplete: "
+                  "assemble again)");
+    const auto bytes = fs::file_size(path, ec);
+    if (ec || static_cast<long>(bytes) != entry["bytes"].get<long>())
+      throw Error(path.string() + ": " + std::to_string(bytes) + " bytes, but system.json's manifest says " +
+                  entry["bytes"].dump() + " (truncated or replaced since xfem-assemble wrote it: assemble again)");
+    if (file_fingerprint(path) != recorded)
+      throw Error(path.string() + ": content differs from system.json's manifest (changed or replaced since "
+                  "xfem-assemble wrote it: assemble again)");
+  }
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (is_system_file(name) && name != "system.json" && !files.contains(name))
+      throw Error(entry.path().string() + ": not in system.json's manifest (not written with this system: remove "
+                  "it or assemble again)");
+  }
+}
+
 void write_system_files(const LinearSystem& s, const std::string& tmp, const std::string& dir,
-                        const std::string& generator, SystemFormat format) {
+                        const std::string& generator, SystemFormat format,
+                        const std::function<void(const std::string&)>& write_more) {
   const bool binary = format == SystemFormat::Petsc;
   if (binary) {
     write_petsc_symmetric_matrix(s.K, join(tmp, "K.petsc"));
@@ -181,14 +246,16 @@ void write_system_files(const LinearSystem& s, const std::string& tmp, const std
   j["pieces"] = Json::array();
   for (const Piece& p : s.pieces) j["pieces"].push_back(Json{{"tets", p.tets}, {"constrained", p.constrained}});
   (void)dir;
-  // system.json last: its presence says the directory is complete.
+  if (write_more) write_more(tmp);
+  j["files"] = file_manifest(tmp);
+  // system.json last: its presence says the directory is complete, its manifest what it holds.
   write_json(j, join(tmp, "system.json"));
 }
 
 }  // namespace
 
 void write_linear_system(const LinearSystem& s, const std::string& dir, const std::string& generator,
-                         SystemFormat format) {
+                         SystemFormat format, const std::function<void(const std::string&)>& write_more) {
   check_linear_system(s, dir);
   for (long k = 0; k < s.K.nonZeros(); ++k)
     if (!std::isfinite(s.K.valuePtr()[k])) throw Error(dir + ": K holds a non-finite value; nothing written");
@@ -212,7 +279,7 @@ void write_linear_system(const LinearSystem& s, const std::string& dir, const st
   fs::remove_all(tmp, ec);
   if (!fs::create_directory(tmp, ec)) throw Error(dir + ": cannot create " + tmp.string() + ": " + ec.message());
   try {
-    write_system_files(s, tmp.string(), dir, generator, format);
+    write_system_files(s, tmp.string(), dir, generator, format, write_more);
     move_into_place(tmp, target);
   } catch (...) {
     fs::remove_all(tmp, ec);
@@ -233,7 +300,7 @@ std::string system_matrix_file(const std::string& dir, SystemFormat format) {
   return join(dir, format == SystemFormat::Petsc ? "K.petsc" : "K.mtx");
 }
 
-LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
+LinearSystem read_linear_system(const std::string& dir, bool with_matrix, bool check_manifest) {
   if (!std::filesystem::exists(dir)) throw Error(dir + ": no such directory" + kHint);
   if (!std::filesystem::is_directory(dir))
     throw Error(dir + ": not a directory (expected the system directory written by xfem-assemble)");
@@ -280,6 +347,8 @@ LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
     }
   } else if (!std::filesystem::exists(k_path)) {
     throw Error(k_path + ": cannot open for reading (does it exist?)" + kHint);
+  } else if (binary) {
+    read_petsc_matrix_header(k_path);  // its own message for a truncated or wrong file, before the manifest's
   }
 
   const std::string f_path = join(dir, binary ? "f.petsc" : "f.mtx");
@@ -307,6 +376,9 @@ LinearSystem read_linear_system(const std::string& dir, bool with_matrix) {
     for (long k = 0; k < s.np; ++k) s.coordinates.row(k) = c.segment<3>(3 * k).transpose();
   }
   if (with_matrix) check_linear_system(s, dir);
+  // Last, after each file parsed on its own: do they belong together? (Checked after the reads,
+  // so that a directory swapped in while they ran differs from the manifest read before them.)
+  if (check_manifest) check_files(dir, j, json_path);
   return s;
 }
 

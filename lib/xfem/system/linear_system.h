@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,11 @@ enum class SystemFormat { Petsc, MatrixMarket };
 ///                  scalar DOF (row 3k + i + 1, the prescribed value in metres)
 ///   coordinates.petsc | coordinates.mtx  optional, 3 NP: entry 3k + i is coordinate i of mesh
 ///                  point k in metres (the rigid-body modes for PETSc's GAMG)
+///   dirichlet_conditions.json, provenance.json  optional (xfem-assemble writes both)
 ///   system.json    format, np, ns, nb, n, dofs (= 3N), nonzeros, fixed, pieces, coordinates,
-///                  generator; written last: the marker that the directory is complete
+///                  generator, and `files`: the manifest, each other file's size in bytes and the
+///                  fnv1a64 of its bytes; written last: the marker that the directory is complete,
+///                  and what ties its files to each other (read_linear_system checks it)
 /// Scalar unknown of component i of the 3-vector U_k is 3k + i (docs/FORMATS.md).
 struct LinearSystem {
   SparseMatrix K;                    ///< 3N x 3N; at least the lower triangle is filled
@@ -52,9 +56,13 @@ struct LinearSystem {
 /// A failed write removes the temporary directory and leaves an existing `dir` untouched; an
 /// interrupted one leaves at most the temporary directory. Refuses to replace an existing
 /// directory holding files that are not part of a system. Parent directories are created.
-/// `generator` goes into system.json ("xfem-assemble 0.1.0").
+/// `generator` goes into system.json ("xfem-assemble 0.1.0"). `write_more`, when given, writes
+/// further files into the temporary directory it is passed (before system.json, so that the
+/// manifest covers them and they appear with the system, never after it): xfem-assemble's
+/// dirichlet_conditions.json and provenance.json.
 void write_linear_system(const LinearSystem& system, const std::string& dir, const std::string& generator,
-                         SystemFormat format = SystemFormat::Petsc);
+                         SystemFormat format = SystemFormat::Petsc,
+                         const std::function<void(const std::string& tmp_dir)>& write_more = {});
 
 /// Checks `system` is consistent (N = NP + NS + 4 NB, K square 3N x 3N, f 3N, fixed strictly
 /// increasing and < 3N, one value per fixed DOF, coordinates NP x 3 or empty); throws
@@ -65,10 +73,16 @@ void check_linear_system(const LinearSystem& system, const std::string& where);
 /// (sizes agree with dofs = 3N, fixed DOFs in range, K symmetric). K comes back as its full
 /// symmetric matrix. Throws xfem::Error naming the file and the problem, e.g.
 /// "out/system/f.mtx: 12 rows, expected 3N = 24 (is this xfem-assemble output?)"; a directory
-/// without system.json is refused as incomplete.
+/// without system.json is refused as incomplete. Then every file is checked against system.json's
+/// manifest (size and fnv1a64 of its bytes; a listed file missing, a system file not listed, or
+/// a system.json without a manifest, written before manifests existed, are refused): a file
+/// truncated, edited or copied from another assembly is never solved.
 /// With `with_matrix` false, K is left empty (0 x 0): for the PETSc backend, whose ranks load
-/// only their rows of K themselves (system_matrix_file).
-LinearSystem read_linear_system(const std::string& dir, bool with_matrix = true);
+/// only their rows of K themselves (system_matrix_file); a binary K's header is still checked, and
+/// K's bytes against the manifest, before any rank loads it. With `check_manifest` false the
+/// manifest is not checked: for a quick look at the sizes by a process that does not solve (the
+/// launcher of the PETSc ranks, each of which reads the system again and checks it).
+LinearSystem read_linear_system(const std::string& dir, bool with_matrix = true, bool check_manifest = true);
 
 /// The format of the system in `dir` (from its system.json; Matrix Market when it names none, as
 /// in directories written before the binary format). Throws like read_linear_system.
