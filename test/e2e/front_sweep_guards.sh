@@ -54,7 +54,8 @@ for n in radius spacing; do grep -qF -- "--allow-large" "$S/front-$n.err" || fai
 runs() {
   local name=$1; shift
   timeout 3 "$@" >"$S/$name.out" 2>"$S/$name.err"; local rc=$?
-  [ $rc -eq 124 ] || fail "$name: --allow-large must run past the guard (exit $rc): $(head -c 300 "$S/$name.err")"
+  # Still running after 3 s (124), or done (0) on a fast machine: either way past the guard.
+  [ $rc -eq 124 ] || [ $rc -eq 0 ] || fail "$name: --allow-large must run past the guard (exit $rc): $(head -c 300 "$S/$name.err")"
   echo "ok $name: runs"
 }
 runs front-order-allowed "${F[@]}" --solution "$S/u.mtx" --order 20 --allow-large --csv "$S/o.csv"
