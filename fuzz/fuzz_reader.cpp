@@ -86,6 +86,15 @@ const std::map<std::string, Reader>& readers() {
       {"system", [](const std::uint8_t* d, std::size_t n) { xfem::read_linear_system(system_dir(d, n)); }},
       {"problem", [](const std::uint8_t* d, std::size_t n) { xfem::read_problem(file_with("problem.json", d, n)); }},
       {"exact", [](const std::uint8_t* d, std::size_t n) { xfem::read_exact_field(file_with("exact.json", d, n)); }},
+      {"msh",  // gmsh's .msh, read as a body and as a cut
+       [](const std::uint8_t* d, std::size_t n) {
+         const std::string path = file_with("mesh.msh", d, n);
+         try {
+           xfem::read_tet_mesh(path);
+         } catch (const xfem::Error&) {
+         }
+         xfem::read_triangle_mesh(path);
+       }},
   };
   return all;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # gmsh input: a .msh (4.1 and 2.2) through the whole pipeline with physical groups as the
 # Dirichlet and Neumann sets, a cut written and read as .vtu, the wound written as .vtu, and the
-# one-line errors for an unknown group and a broken .msh.
+# one-line errors for an unknown group, a broken .msh and one mixing a tet's orders in a volume.
 set -u
 S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"; cd "$S" || exit 1
 B=$XFEM_BIN; D=$XFEM_SOURCE/test/data/gmsh
@@ -55,4 +55,11 @@ expect_error "bad.json: neumann[0] ('top'): the mesh has no group 'lid' (its gro
 echo garbage > broken.msh
 expect_error "broken.msh: cannot read the gmsh file" out.vtu "$B/xfem-classify" -q broken.msh --cut cut.vtu -o out.vtu
 expect_error "square41.msh: no tetrahedra" out.vtu "$B/xfem-classify" -q "$D/square41.msh" --cut cut.vtu -o out.vtu
+# A 10-node tet in the volume of a linear one (gmsh's library wrote out of bounds on it, SIGABRT):
+# the check before gmsh reads the file refuses it in one line.
+{ printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n10\n'
+  printf '1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 .5 0 0\n6 .5 .5 0\n7 0 .5 0\n8 0 0 .5\n9 0 .5 .5\n10 .5 0 .5\n'
+  printf '$EndNodes\n$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 11 2 0 1 1 2 3 4 5 6 7 8 9 10\n$EndElements\n'; } > mixed.msh
+expect_error "mixed.msh: entity 1 of dimension 3 mixes Tetrahedron 4 (gmsh element type 4) and Tetrahedron 10 (gmsh element type 11) elements" \
+  out.vtu "$B/xfem-classify" -q mixed.msh --cut cut.vtu -o out.vtu
 echo "gmsh: ok"

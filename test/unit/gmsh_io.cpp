@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -187,4 +188,222 @@ LOOKUP_TABLE default
   write_text(quad, "# vtk DataFile Version 2.0\nq\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
                    "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 3 12\n1 0\n4 0 1 2 3\n4 0 1 2 3\nCELL_TYPES 3\n1 10 9\n");
   CHECK_THROWS_WITH(xfem::read_tet_mesh(quad), Contains("cell 2 is a vtkQuad"));
+}
+
+namespace {
+
+// Nodes 1..35 (1-4 the unit tet's corners, the others anywhere: gmsh does not check where a
+// high-order node lies), as MSH 2.2 or MSH 4.1 text.
+Eigen::Vector3d node(int k) {
+  if (k <= 4) return k == 1 ? Eigen::Vector3d(0, 0, 0) : Eigen::Vector3d::Unit(k - 2);
+  return Eigen::Vector3d(0.01 * k, 0.02 * k, 0.005 * k);
+}
+
+// The node list of an element of n nodes: the unit tet's or triangle's corners first.
+std::string nodes_of(int n) {
+  std::string s;
+  for (int k = 1; k <= n; ++k) s += " " + std::to_string(k);
+  return s;
+}
+
+// One linear element (gmsh type `linear`, `corners` nodes) and, in the same entity 1, one of
+// `type` with `n` nodes (type 0: none); MSH 2.2 ASCII.
+std::string msh22(int linear, int corners, int type, int n) {
+  std::string s = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n35\n";
+  for (int k = 1; k <= 35; ++k) {
+    const Eigen::Vector3d x = node(k);
+    s += std::to_string(k) + " " + std::to_string(x.x()) + " " + std::to_string(x.y()) + " " + std::to_string(x.z()) + "\n";
+  }
+  s += "$EndNodes\n$Elements\n" + std::string(type ? "2" : "1") + "\n";
+  s += "1 " + std::to_string(linear) + " 2 0 1" + nodes_of(corners) + "\n";
+  if (type) s += "2 " + std::to_string(type) + " 2 0 1" + nodes_of(n) + "\n";
+  return s + "$EndElements\n";
+}
+
+// The same in MSH 4.1 ASCII: entity (dim, 1) holds a block of the linear element and a block of `type`.
+std::string msh41(int dim, int linear, int corners, int type, int n) {
+  std::string s = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 " + std::string(dim == 2 ? "1 0" : "0 1") +
+                  "\n1 0 0 0 1 1 1 0 0\n$EndEntities\n$Nodes\n1 35 1 35\n" + std::to_string(dim) + " 1 0 35\n";
+  for (int k = 1; k <= 35; ++k) s += std::to_string(k) + "\n";
+  for (int k = 1; k <= 35; ++k) {
+    const Eigen::Vector3d x = node(k);
+    s += std::to_string(x.x()) + " " + std::to_string(x.y()) + " " + std::to_string(x.z()) + "\n";
+  }
+  s += "$EndNodes\n$Elements\n" + std::string(type ? "2 2 1 2\n" : "1 1 1 1\n");
+  s += std::to_string(dim) + " 1 " + std::to_string(linear) + " 1\n1" + nodes_of(corners) + "\n";
+  if (type) s += std::to_string(dim) + " 1 " + std::to_string(type) + " 1\n2" + nodes_of(n) + "\n";
+  return s + "$EndElements\n";
+}
+
+}  // namespace
+
+TEST_CASE("gmsh: an entity mixing orders of one shape is one error line and never a crash", "[gmsh]") {
+  // gmsh's library reads every tet of an entity as the first one's type: a 10-node tet after a
+  // 4-node one in the same volume made it write out of bounds (SIGABRT in every mesh reader).
+  struct Case {
+    int type, nodes;
+    const char* name;
+  };
+  for (const Case& c : {Case{11, 10, "Tetrahedron 10"}, Case{29, 20, "Tetrahedron 20"}, Case{30, 35, "Tetrahedron 35"}}) {
+    INFO(c.name);
+    const std::string v22 = scratch("mixed22_" + std::to_string(c.type) + ".msh"),
+                      v41 = scratch("mixed41_" + std::to_string(c.type) + ".msh");
+    write_text(v22, msh22(4, 4, c.type, c.nodes));
+    write_text(v41, msh41(3, 4, 4, c.type, c.nodes));
+    const std::string mixes = ": entity 1 of dimension 3 mixes Tetrahedron 4 (gmsh element type 4) and " +
+                              std::string(c.name) + " (gmsh element type " + std::to_string(c.type) + ") elements";
+    CHECK_THROWS_WITH(xfem::read_tet_mesh(v22), Contains(v22 + mixes));
+    CHECK_THROWS_WITH(xfem::read_tet_mesh(v41), Contains(v41 + mixes));
+    CHECK_THROWS_WITH(xfem::read_triangle_mesh(v22), Contains(v22 + mixes));  // the cut reader checks too
+  }
+  // A 6-node triangle among a cut's 3-node triangles.
+  const std::string t22 = scratch("mixed_tri22.msh"), t41 = scratch("mixed_tri41.msh");
+  write_text(t22, msh22(2, 3, 9, 6));
+  write_text(t41, msh41(2, 2, 3, 9, 6));
+  const std::string mixes = ": entity 1 of dimension 2 mixes Triangle 3 (gmsh element type 2) and Triangle 6 (gmsh "
+                            "element type 9) elements";
+  CHECK_THROWS_WITH(xfem::read_triangle_mesh(t22), Contains(t22 + mixes));
+  CHECK_THROWS_WITH(xfem::read_triangle_mesh(t41), Contains(t41 + mixes));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(t41), Contains(t41 + mixes));
+
+  // The linear elements alone still read: one tet of volume 1/6, one triangle.
+  const std::string l22 = scratch("linear22.msh"), l41 = scratch("linear41.msh"), s22 = scratch("tri22.msh");
+  write_text(l22, msh22(4, 4, 0, 0));
+  write_text(l41, msh41(3, 4, 4, 0, 0));
+  write_text(s22, msh22(2, 3, 0, 0));
+  for (const std::string& f : {l22, l41}) {
+    INFO(f);
+    const xfem::TetMesh m = xfem::read_tet_mesh(f);
+    REQUIRE(m.tets.rows() == 1);
+    CHECK(m.points.rows() == 4);
+    CHECK(volume(m) == Approx(1.0 / 6).epsilon(1e-12));
+  }
+  const xfem::TriangleMesh s = xfem::read_triangle_mesh(s22);
+  CHECK(s.triangles.rows() == 1);
+  CHECK(s.points.rows() == 3);
+  // One order per entity is what gmsh reads: a 10-node tet in an entity of its own reaches the
+  // documented refusal of second-order meshes.
+  std::string own = msh22(4, 4, 11, 10);
+  own.replace(own.find("2 11 2 0 1"), 10, "2 11 2 0 2");
+  const std::string separate = scratch("separate.msh");
+  write_text(separate, own);
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(separate),
+                    Contains(separate + ": the mesh has Tetrahedron 10 (gmsh element type 11) elements; only linear"));
+}
+
+TEST_CASE("gmsh: the element sections are checked before gmsh reads them", "[gmsh]") {
+  const auto refused = [](const std::string& name, const std::string& text) {
+    const std::string path = scratch(name);
+    write_text(path, text);
+    try {
+      xfem::read_tet_mesh(path);
+    } catch (const xfem::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  std::string text = msh22(4, 4, 0, 0);
+  text.replace(text.find("1 4 2 0 1"), 9, "1 999 2 0 1");
+  CHECK(refused("type999.msh", text) == scratch("type999.msh") + ": element type 999 is not a gmsh element type");
+  text = msh41(3, 4, 4, 0, 0);
+  text.replace(text.find("3 1 4 1\n"), 8, "2 1 4 1\n");
+  CHECK(refused("dim.msh", text) ==
+        scratch("dim.msh") + ": entity 1 of dimension 2 holds Tetrahedron 4 (gmsh element type 4) elements, of dimension 3");
+  text = msh22(4, 4, 0, 0);
+  text.replace(text.find("2.2 0 8"), 7, "3.0 0 8");
+  CHECK(refused("v3.msh", text) ==
+        scratch("v3.msh") + ": MSH version '3.0' is not read (save as MSH 4.1 or 2.2: gmsh -format msh41)");
+  text = msh22(4, 4, 0, 0);
+  text.replace(text.find("1 4 2 0 1 1 2 3 4"), 17, "1 4 2 0 1 1 2 3");  // an element one node short
+  CHECK(refused("short.msh", text) == scratch("short.msh") +
+                                          ": an element's node in the $Elements section is not a whole number of at "
+                                          "most 17 digits (or the file ends there)");
+  text = msh41(3, 4, 4, 0, 0);
+  text.replace(text.find("1 1 1 1\n"), 8, "1 99999999999999999999 1 1\n");
+  CHECK(refused("huge.msh", text) == scratch("huge.msh") +
+                                         ": the element count or tags in the $Elements section is not a whole number of "
+                                         "at most 17 digits (or the file ends there)");
+}
+
+namespace {
+
+// Bytes of a binary .msh file, in this machine's byte order (as gmsh writes them).
+struct Bytes {
+  std::string s;
+  template <class T>
+  Bytes& put(T v) {
+    s.append(reinterpret_cast<const char*>(&v), sizeof v);
+    return *this;
+  }
+  Bytes& text(const std::string& t) {
+    s += t;
+    return *this;
+  }
+};
+
+// msh22 and msh41 (a tet mesh) as binary files: a linear tet and, in the same entity, one of
+// `type` (0: none).
+std::string msh22_binary(int type, int n) {
+  Bytes b;
+  b.text("$MeshFormat\n2.2 1 8\n").put<std::int32_t>(1).text("\n$EndMeshFormat\n$Nodes\n35\n");
+  for (int k = 1; k <= 35; ++k) b.put<std::int32_t>(k).put(node(k).x()).put(node(k).y()).put(node(k).z());
+  b.text("\n$EndNodes\n$Elements\n" + std::string(type ? "2" : "1") + "\n");
+  b.put<std::int32_t>(4).put<std::int32_t>(1).put<std::int32_t>(2).put<std::int32_t>(1).put<std::int32_t>(0).put<std::int32_t>(1);
+  for (int k = 1; k <= 4; ++k) b.put<std::int32_t>(k);
+  if (type) {
+    b.put<std::int32_t>(type).put<std::int32_t>(1).put<std::int32_t>(2).put<std::int32_t>(2).put<std::int32_t>(0).put<std::int32_t>(1);
+    for (int k = 1; k <= n; ++k) b.put<std::int32_t>(k);
+  }
+  return b.text("\n$EndElements\n").s;
+}
+
+std::string msh41_binary(int type, int n) {
+  Bytes b;
+  b.text("$MeshFormat\n4.1 1 8\n").put<std::int32_t>(1).text("\n$EndMeshFormat\n$Entities\n");
+  b.put<std::size_t>(0).put<std::size_t>(0).put<std::size_t>(0).put<std::size_t>(1).put<std::int32_t>(1);
+  for (double v : {0, 0, 0, 1, 1, 1}) b.put(v);
+  b.put<std::size_t>(0).put<std::size_t>(0).text("\n$EndEntities\n$Nodes\n");
+  b.put<std::size_t>(1).put<std::size_t>(35).put<std::size_t>(1).put<std::size_t>(35);
+  b.put<std::int32_t>(3).put<std::int32_t>(1).put<std::int32_t>(0).put<std::size_t>(35);
+  for (std::size_t k = 1; k <= 35; ++k) b.put(k);
+  for (int k = 1; k <= 35; ++k) b.put(node(k).x()).put(node(k).y()).put(node(k).z());
+  const std::size_t blocks = type ? 2 : 1;
+  b.text("\n$EndNodes\n$Elements\n").put(blocks).put(blocks).put<std::size_t>(1).put(blocks);
+  b.put<std::int32_t>(3).put<std::int32_t>(1).put<std::int32_t>(4).put<std::size_t>(1).put<std::size_t>(1);
+  for (std::size_t k = 1; k <= 4; ++k) b.put(k);
+  if (type) {
+    b.put<std::int32_t>(3).put<std::int32_t>(1).put<std::int32_t>(type).put<std::size_t>(1).put<std::size_t>(2);
+    for (std::size_t k = 1; k <= static_cast<std::size_t>(n); ++k) b.put(k);
+  }
+  return b.text("\n$EndElements\n").s;
+}
+
+}  // namespace
+
+TEST_CASE("gmsh: binary files are checked as the ASCII ones", "[gmsh]") {
+  // gmsh's binary export of the test cubes (gmsh cube41.msh -save -format msh41 -bin) reads as the ASCII files.
+  for (const char* v : {"22", "41"}) {
+    INFO(v);
+    const xfem::TetMesh ascii = xfem::read_tet_mesh(data + "cube" + v + ".msh");
+    const xfem::TetMesh binary = xfem::read_tet_mesh(data + "cube" + v + "_bin.msh");
+    CHECK(binary.points == ascii.points);
+    CHECK(binary.tets == ascii.tets);
+    CHECK(xfem::group_names(binary) == xfem::group_names(ascii));
+  }
+  const std::string b22 = scratch("mixed22_bin.msh"), b41 = scratch("mixed41_bin.msh");
+  write_text(b22, msh22_binary(11, 10));
+  write_text(b41, msh41_binary(11, 10));
+  const std::string mixes =
+      ": entity 1 of dimension 3 mixes Tetrahedron 4 (gmsh element type 4) and Tetrahedron 10 (gmsh element type 11) elements";
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(b22), Contains(b22 + mixes));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(b41), Contains(b41 + mixes));
+  // The same writers with one order read (the tet and its 35 nodes, 31 of them unused and dropped).
+  write_text(b22, msh22_binary(0, 0));
+  write_text(b41, msh41_binary(0, 0));
+  CHECK(volume(xfem::read_tet_mesh(b22)) == Approx(1.0 / 6).epsilon(1e-12));
+  CHECK(volume(xfem::read_tet_mesh(b41)) == Approx(1.0 / 6).epsilon(1e-12));
+  // Cut short inside its element (5 size_t: the tag and 4 nodes).
+  const std::string whole = msh41_binary(0, 0);
+  write_text(b41, whole.substr(0, whole.find("$EndElements") - 40));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(b41), Contains(b41 + ": the file ends inside its binary $Elements section"));
 }

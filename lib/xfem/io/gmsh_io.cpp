@@ -11,6 +11,7 @@
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/boundary_groups.h"
 #include "xfem/core/error.h"
+#include "xfem/io/gmsh_check.h"
 #include "xfem/io/vtk_io.h"
 
 #ifndef XFEM_GMSH_LIBRARY
@@ -94,6 +95,7 @@ class GmshSession {
     if (ierr) throw Error(path + ": cannot start gmsh's library");
     try {
       api_.gmshOptionSetNumber("General.Terminal", 0, &ierr);
+      check_gmsh_elements(path, [&](int type) { return element_type(type); });
       guard([&](int* e) { api_.gmshOpen(path.c_str(), e); }, "cannot read the gmsh file");
     } catch (...) {
       api_.gmshFinalize(&ierr);  // the destructor does not run when the constructor throws
@@ -107,6 +109,20 @@ class GmshSession {
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
   const GmshApi& api() const { return api_; }
+
+  // gmsh's name, dimension and node count of an element type number.
+  GmshElementType element_type(int type) const {
+    char* name = nullptr;
+    GmshElementType t;
+    int order = 0, primary = 0, ierr = 0;
+    GmshArray<double> local;
+    api_.gmshModelMeshGetElementProperties(type, &name, &t.dim, &order, &t.nodes, &local.data, &local.size, &primary,
+                                           &ierr);
+    t.name = take_string(name);
+    if (ierr || t.nodes < 1 || t.name.empty())
+      throw Error(path_ + ": element type " + std::to_string(type) + " is not a gmsh element type");
+    return t;
+  }
 
   // Runs a gmsh call (given its error flag); on failure gmsh's last logged error is the message.
   template <class F>
