@@ -74,13 +74,17 @@ int main(int argc, char** argv) {
                  "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
                  "of K is exactly zero are always fixed to 0, with a warning")
       ->check(xfem::cli::non_negative());
+#if XFEM_SOLVE_LINKS_PETSC
+  // Outlives cli::run, so that rank 0 prints a failure before MPI is finalized: finalizing first
+  // let mpirun stop rank 0 before its error line, once another rank had exited.
+  std::unique_ptr<xfem::PetscSession> mpi;
+#endif
   return xfem::cli::run(*tool, argc, argv, [&] {
     using xfem::cli::three_digits;
     xfem::cli::check_output(output, {".mtx"}, true);
     if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
     backend = xfem::launch_backend(dir, backend, processes, XFEM_SOLVE_LINKS_PETSC, argc, argv, output);
 #if XFEM_SOLVE_LINKS_PETSC
-    std::unique_ptr<xfem::PetscSession> mpi;
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
     const bool root = !mpi || mpi->rank() == 0;
 #else
