@@ -20,6 +20,8 @@
 #include <vtkPolyDataMapper2D.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
+
+#include <mutex>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
@@ -368,6 +370,11 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
              }());
   caption_strip->AddActor2D(text(caption, 0.02, 0.08, font, VTK_TEXT_LEFT));
 
+  // One picture at a time: xfem-sweep renders frames from two threads when its worker falls behind,
+  // and two X connections opened at once without XInitThreads fail ("bad X server connection").
+  // Declared before the window, so the window is released under the lock too.
+  static std::mutex rendering;
+  const std::lock_guard<std::mutex> lock(rendering);
   auto window = Ptr<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
   window->SetSize(o.width, o.height);
