@@ -81,35 +81,7 @@ int main(int argc, char** argv) {
       xfem::store_cut_fingerprints(meshes, mesh);
       xfem::write_tet_mesh(mesh, output);
       xfem::Json j = summary_header(cut_names);
-      j["cuts"] = xfem::Json::array();
-      const auto count_names = xfem::count_names();
-      for (std::size_t k = 0; k < c.cuts.size(); ++k) {
-        const auto& n = c.cuts[k].counts;
-        xfem::cli::info("cut " + std::to_string(k) + " (" + cut_names[k] + "): " + std::to_string(n.partial) + " partially and " +
-                        std::to_string(n.complete) + " completely cut tets; " + std::to_string(n.sign) + " sign, " +
-                        std::to_string(n.branch) + " branch nodes; " + std::to_string(n.front_segments) +
-                        " front segments" +
-                        (c.ends_on[k] >= 0 ? "; ends on cut " + std::to_string(c.ends_on[k]) + " (junction)" : ""));
-        xfem::Json cj;
-        cj["cut"] = cut_names[k];
-        cj["ends_on"] = c.ends_on[k];
-        const auto values = xfem::count_values(n);
-        for (std::size_t i = 0; i < count_names.size(); ++i) cj[count_names[i]] = values[i];
-        j["cuts"].push_back(cj);
-      }
-      j["products"] = xfem::Json::array();
-      for (const auto& p : c.products) {
-        xfem::cli::info("cuts " + std::to_string(p.a) + " and " + std::to_string(p.b) + " cross: " +
-                        std::to_string(p.count) + " nodes with the junction enrichment H_" + std::to_string(p.a) + " H_" +
-                        std::to_string(p.b));
-        j["products"].push_back(xfem::Json{{"a", p.a}, {"b", p.b}, {"nodes", p.count}});
-      }
-      j["product_tiny"] = c.product_tiny;
-      if (c.product_tiny > 0)
-        xfem::cli::detail(std::to_string(c.product_tiny) +
-                          " nodes are not given a junction enrichment: one of the four sign combinations of two "
-                          "crossing cuts holds less than --tiny-support of their support (the cuts' pieces stay "
-                          "joined inside that sliver)");
+      xfem::report_cuts_classification(c, cut_names, j);
       if (!summary.empty()) xfem::write_json(j, summary);
       return;
     }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enrich/classification_several_cuts.h"
 
+#include "xfem/core/cli.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -368,6 +370,38 @@ int cut_count(const TetMesh& mesh) {
   const auto it = mesh.field_data.find("cut_count");
   if (it == mesh.field_data.end() || it->second.values.empty()) return 1;
   return static_cast<int>(it->second.values[0]);
+}
+
+void report_cuts_classification(const CutsClassification& c, const std::vector<std::string>& cut_names, Json& j) {
+  j["cuts"] = Json::array();
+  const auto names = count_names();
+  for (std::size_t k = 0; k < c.cuts.size(); ++k) {
+    const auto& n = c.cuts[k].counts;
+    cli::info("cut " + std::to_string(k) + " (" + cut_names[k] + "): " + std::to_string(n.partial) + " partially and " +
+              std::to_string(n.complete) + " completely cut tets; " + std::to_string(n.sign) + " sign, " +
+              std::to_string(n.branch) + " branch nodes; " + std::to_string(n.front_segments) +
+              " front segments" +
+              (c.ends_on[k] >= 0 ? "; ends on cut " + std::to_string(c.ends_on[k]) + " (junction)" : ""));
+    Json cj;
+    cj["cut"] = cut_names[k];
+    cj["ends_on"] = c.ends_on[k];
+    const auto values = count_values(n);
+    for (std::size_t i = 0; i < names.size(); ++i) cj[names[i]] = values[i];
+    j["cuts"].push_back(cj);
+  }
+  j["products"] = Json::array();
+  for (const auto& p : c.products) {
+    cli::info("cuts " + std::to_string(p.a) + " and " + std::to_string(p.b) + " cross: " +
+              std::to_string(p.count) + " nodes with the junction enrichment H_" + std::to_string(p.a) + " H_" +
+              std::to_string(p.b));
+    j["products"].push_back(Json{{"a", p.a}, {"b", p.b}, {"nodes", p.count}});
+  }
+  j["product_tiny"] = c.product_tiny;
+  if (c.product_tiny > 0)
+    cli::detail(std::to_string(c.product_tiny) +
+                " nodes are not given a junction enrichment: one of the four sign combinations of two "
+                "crossing cuts holds less than --tiny-support of their support (the cuts' pieces stay "
+                "joined inside that sliver)");
 }
 
 }  // namespace xfem

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "xfem/core/json_io.h"
+
 #include "xfem/enrich/classification.h"
 #include "xfem/geometry/cut_surface.h"
 
@@ -62,5 +64,10 @@ int cut_count(const TetMesh& mesh);
 std::string cut_suffix(int k);
 /// The suffix of the arrays of the product of cuts a and b: "_a_b".
 std::string pair_suffix(int a, int b);
+
+/// What xfem-classify reports of several cuts: a line per cut and per crossing pair on stderr
+/// (cli::info; the junction nodes left out, cli::detail) and the summary's `cuts`, `products` and
+/// `product_tiny` added to `j` (docs/FORMATS.md "Several cuts"). `cut_names` as read_cuts gives them.
+void report_cuts_classification(const CutsClassification& c, const std::vector<std::string>& cut_names, Json& j);
 
 }  // namespace xfem

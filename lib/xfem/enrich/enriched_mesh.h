@@ -56,6 +56,12 @@ struct EnrichedMesh {
       if (dofs[e] >= np) return false;
     return true;
   }
+  /// Does tet t hold branch (crack-tip) DOFs? Only those tets' basis gradients vary inside a side.
+  bool branch(int t) const {
+    for (long e = offsets[t]; e < offsets[t + 1]; ++e)
+      if (dofs[e] >= np + ns) return true;
+    return false;
+  }
 };
 
 /// Reads enriched.vtu (`vtu`) and the cut (`cut_path`) and checks the contract of

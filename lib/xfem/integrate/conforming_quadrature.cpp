@@ -196,8 +196,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   }
   // The sign enrichment is constant on each piece and the shape functions linear: one point per
   // piece integrates exactly. Branch functions need the front-singular Gauss rule.
-  bool branch = false;
-  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  const bool branch = em.branch(t);
   for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
     const auto& q = splits.tets[s];
     if (branch) {
@@ -223,8 +222,7 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   }
   // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
-  bool branch = false;
-  for (long e = em.offsets[t]; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  const bool branch = em.branch(t);
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
     const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_order, face_cache);

@@ -24,8 +24,7 @@ void element_points(const EnrichedMesh& em, const CutElementSplits& splits, int 
   conforming_rule(em, splits, t, order, rule);
   Eigen::MatrixXd gradients;
   sampled_gradients(em, t, rule, order, face_cache, gradients);
-  bool branch = false;
-  for (long e = base; e < em.offsets[t + 1] && !branch; ++e) branch = em.dofs[e] >= em.np + em.ns;
+  const bool branch = em.branch(t);
   const int q = rule.size();
   if (branch) {
     out.weight = Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), q);

@@ -39,10 +39,7 @@ Json steps_json(const std::vector<LoadStep>& steps) {
 }
 
 void require_constrained_pieces(const EnrichedMesh& em, const Problem& problem, const std::vector<long>& fixed) {
-  std::vector<char> node_constrained(em.mesh.points.rows(), 0);
-  for (long dof : fixed)
-    if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
-  const std::vector<Piece> pieces = find_pieces(em, node_constrained);
+  const std::vector<Piece> pieces = find_pieces_held_by(em, fixed);
   for (std::size_t i = 0; i < pieces.size(); ++i)
     if (!pieces[i].constrained)
       throw Error(problem.file + ": piece " + std::to_string(i + 1) + " of " + std::to_string(pieces.size()) + " (" +

@@ -204,10 +204,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
   dirichlet_data(em, problem, sys.fixed, sys.fixed_values);
-  std::vector<char> node_constrained(em.mesh.points.rows(), 0);
-  for (long dof : sys.fixed)  // enriched DOFs (exact conditions) do not hold a piece in place
-    if (dof / 3 < em.np) node_constrained[dof / 3] = 1;
-  sys.pieces = find_pieces(em, node_constrained);
+  sys.pieces = find_pieces_held_by(em, sys.fixed);
   sys.coordinates = em.mesh.points;
   s.load_seconds += seconds_since(clock);
   return sys;

@@ -247,4 +247,11 @@ std::vector<Piece> find_pieces(const EnrichedMesh& m, const std::vector<char>& n
   return pieces;
 }
 
+std::vector<Piece> find_pieces_held_by(const EnrichedMesh& mesh, const std::vector<long>& fixed) {
+  std::vector<char> node_constrained(mesh.mesh.points.rows(), 0);
+  for (long dof : fixed)
+    if (dof / 3 < mesh.np) node_constrained[dof / 3] = 1;
+  return find_pieces(mesh, node_constrained);
+}
+
 }  // namespace xfem

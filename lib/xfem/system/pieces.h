@@ -32,6 +32,10 @@ namespace xfem {
 ///         tets and tet halves. Throws xfem::Error if the array sizes do not match the mesh.
 std::vector<Piece> find_pieces(const EnrichedMesh& mesh, const std::vector<char>& node_constrained);
 
+/// find_pieces with the points held by the Dirichlet DOFs `fixed` (scalar DOFs 3k + i): only the
+/// original DOFs hold a piece in place, the enriched ones (fixed by exact conditions) do not.
+std::vector<Piece> find_pieces_held_by(const EnrichedMesh& mesh, const std::vector<long>& fixed);
+
 /// The faces two tets of `mesh` share (the mesh alone: for many cuts of one body, e.g. the steps
 /// of a sweep): per face its 3 nodes sorted and the two tets. Throws xfem::Error for a node index
 /// out of range.
