@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"petsc", "mtx"}));
   bool allow_large = false;
   app.add_flag("--allow-large", allow_large, "run even when the integration points are estimated above 2e8");
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output_directory(output);
     const double start = xfem::cli::now();

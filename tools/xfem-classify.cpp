@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
                  "sign-enrich a node only if at least this fraction of its support's volume lies on the other "
                  "side of the cut (dimensionless, default 1e-7, a decade above where xfem-solve starts to warn of a near-singular K; 1e-4 is common with iterative solvers but breaks the exact representation of a cut body: see docs/CLASSIFICATION.md)")
       ->check(xfem::cli::range(0.0, 0.5));
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});
     if (!summary.empty()) xfem::cli::check_output(summary, {".json"}, true);

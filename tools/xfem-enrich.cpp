@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "enriched mesh (.vtu)")->required();
   app.add_option("-c,--cut", cut_path, "accepted for symmetry with the later stages and ignored: the numbering needs "
                                        "only the classification");
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});
     std::vector<std::string> warnings;

@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
   app.callback([&] {
     if (output.empty() && csv.empty() && png.empty()) throw CLI::RequiredError("-o, --csv or --png");
   });
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     const xfem::Problem problem = xfem::read_problem(problem_path);
     xfem::require_linear_material(problem, "xfem-front's interaction integral is small-strain");

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<xfem::MeshCommand> commands = xfem::add_volume_mesh_commands(app);
   for (auto& c : xfem::add_cut_commands(app)) commands.push_back(std::move(c));
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     for (const auto& c : commands)
       if (c.app->parsed()) c.run();

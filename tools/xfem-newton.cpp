@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
       ->check(xfem::cli::range(1, 1000));
   app.add_option("--ordering", run.ordering, "CHOLMOD's fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(run.output, {".mtx"}, true);
     if (!run.reactions_path.empty()) xfem::cli::check_output(run.reactions_path, {".mtx"}, true);

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "CSV of the sampled displacements ('-' = stdout, the default)");
   app.add_option("--radius", radius, "points outside the mesh but this close are evaluated at the nearest tet "
                                      "(metres; default 1e-6 of the mesh's bounding-box diagonal)");
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     const auto points = xfem::read_probe_points(points_path);
     const xfem::TetMesh plain = xfem::read_tet_mesh(mesh_path);

@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   app.callback([&] {  // during parsing, so that a missing one is a usage error (exit 2)
     if (reference.empty() && exact_path.empty()) throw CLI::RequiredError("--reference or --exact");
   });
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     if (!output.empty()) xfem::cli::check_output(output, {".json"}, true);
     const xfem::ComparedSolution compared{mesh_path, cut_path, solution, standard_dofs_only};

@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
                  "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
                  "of K is exactly zero are always fixed to 0, with a warning")
       ->check(xfem::cli::non_negative());
+  xfem::cli::add_threads_option(*tool);
 #if XFEM_SOLVE_LINKS_PETSC
   // Outlives cli::run, so that rank 0 prints a failure before MPI is finalized: finalizing first
   // let mpirun stop rank 0 before its error line, once another rank had exited.

@@ -61,5 +61,6 @@ int main(int argc, char** argv) {
   app.add_option("--ordering", o.ordering, "CHOLMOD fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   app.add_flag("--allow-large", o.allow_large, "run even with more than 1000 steps (each a solve and its frames)");
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] { xfem::run_sweep(o); });
 }

@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
                  "bodies, files ~1.3x larger; VTK and ParaView >= 5.5 read it, meshio does not) or none")
       ->check(CLI::IsMember({"zlib", "lz4", "none"}));
   app.add_option("--title", title, "first caption line of the picture (default: the output's name)");
+  xfem::cli::add_threads_option(*tool);
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});
     if (!faces.empty()) xfem::cli::check_output(faces, {".vtp", ".vtu"});

@@ -25,7 +25,11 @@ void lower_this_thread_priority();
 template <class T>
 class BackgroundQueue {
  public:
-  BackgroundQueue() : worker_([this] { work(); }) {}
+  /// Without `background` (a run held to one thread: --threads 1) there is no worker: every task
+  /// runs in the caller, by take or run_oldest_waiting.
+  explicit BackgroundQueue(bool background = true) {
+    if (background) worker_ = std::thread([this] { work(); });
+  }
   BackgroundQueue(const BackgroundQueue&) = delete;
   BackgroundQueue& operator=(const BackgroundQueue&) = delete;
   /// Waits for the task the worker is running, if any; tasks not started are dropped.
@@ -35,7 +39,7 @@ class BackgroundQueue {
       stop_ = true;
     }
     changed_.notify_all();
-    worker_.join();
+    if (worker_.joinable()) worker_.join();
   }
 
   void push(std::function<T()> task) {

@@ -30,4 +30,13 @@ class BlasThreads {
 /// OpenBLAS. Returns whether it changed the setting. Call it before any other thread is started.
 bool blas_threads_sleep_when_idle();
 
+/// The libraries' own thread teams for the rest of the run, for --threads (thread_limit.h): OpenBLAS
+/// (behind CHOLMOD and LAPACK; its idle pool, started when the library was loaded, is stopped, and
+/// the next threaded call starts `threads` - 1 helpers) and OpenMP (CHOLMOD's, through libgomp's
+/// omp_set_num_threads, and no active parallel region: CHOLMOD's fixed team of 4 would exceed the
+/// limit) and VTK's SMP tools (TBB, at most one per core).
+/// Each found by name at run time: a library that is not there is left alone. Call it before any
+/// other thread of ours uses them.
+void set_library_threads(int threads);
+
 }  // namespace xfem

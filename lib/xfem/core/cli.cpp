@@ -16,6 +16,7 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/core/thread_limit.h"
 #include "xfem/core/version.h"
 
 namespace xfem::cli {
@@ -274,6 +275,15 @@ std::unique_ptr<Tool> make_tool(const std::string& name, const std::string& desc
   return tool;
 }
 
+void add_threads_option(Tool& tool) {
+  tool.app
+      .add_option("--threads", tool.threads,
+                  "the most threads to use (parallel loops, BLAS and OpenMP teams; the results are the same "
+                  "for any count): default OMP_NUM_THREADS, else one per core, at most 8")
+      ->check(CLI::Range(1, kMaxThreads))
+      ->option_text("N");
+}
+
 int run(Tool& tool, int argc, char** argv, const std::function<void()>& body) {
   const CurrentTool scope(tool);
   hide_required_defaults(tool.app);
@@ -282,6 +292,18 @@ int run(Tool& tool, int argc, char** argv, const std::function<void()>& body) {
   if (!bad_option.empty()) {
     std::cerr << tool.name << ": usage error: " << bad_option << " " << bad_value
               << ": not a finite number (try " << tool.name << " --help)\n";
+    return 2;
+  }
+  // A bad OMP_NUM_THREADS before the command line's own errors (it would be the next one), but not
+  // in the way of --help and --version.
+  std::string bad_threads;
+  bool asks_help = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    asks_help = asks_help || a == "-h" || a == "--help" || a == "--version";
+  }
+  if (!asks_help && threads_from_environment(&bad_threads) < 0) {
+    std::cerr << tool.name << ": usage error: " << printable_line(bad_threads, 200) << " (set a count or unset it)\n";
     return 2;
   }
   try {
@@ -303,6 +325,8 @@ int run(Tool& tool, int argc, char** argv, const std::function<void()>& body) {
               << " --help)\n";
     return 2;
   }
+  // --threads, else OMP_NUM_THREADS, passed on to the libraries' teams (VTK's does not read it).
+  if (const int n = tool.threads > 0 ? tool.threads : threads_from_environment(); n > 0) set_thread_limit(n);
   // The options once per command: not again in the processes xfem-solve restarts itself as
   // (it sets XFEM_OPTIONS_SHOWN), nor in every rank of a user's mpirun.
   const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
@@ -317,6 +341,8 @@ int run(Tool& tool, int argc, char** argv, const std::function<void()>& body) {
     std::cerr << tool.name << ": error: " << one_line(e.what()) << "\n";
     return 1;
   }
+  if (std::getenv("XFEM_COUNT_THREADS"))  // the test hook of thread_limit.h
+    std::cerr << tool.name << ": threads: at most " << thread_count_peak() << " at once\n";
   return 0;
 }
 

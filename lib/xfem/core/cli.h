@@ -15,6 +15,7 @@ struct Tool {
   std::string name;
   bool quiet = false;
   int verbose = 0;  ///< how often -v was given
+  int threads = 0;  ///< --threads (add_threads_option), 0 when not given
   Tool(const std::string& name, const std::string& description);
 };
 
@@ -22,13 +23,19 @@ struct Tool {
 std::unique_ptr<Tool> make_tool(const std::string& name, const std::string& description,
                                 const std::string& example);
 
+/// Adds --threads N to the tool (the most threads the run uses: parallel loops, OpenBLAS and
+/// OpenMP teams; default OMP_NUM_THREADS, else one per core up to 8; thread_limit.h). One line in
+/// each tool's main; run() applies it before the tool's body.
+void add_threads_option(Tool& tool);
+
 /// Parses the command line and runs `body`. Before parsing, any option value that reads as a
 /// non-finite number ("nan", "inf", "1e999") is a usage error, so no numeric option ever sees NaN
 /// or Inf; required options show no default in --help; an unknown subcommand or option gets a
 /// "did you mean" suggestion. Returns the process exit code: 0 on success,
 /// 1 when `body` throws (bad input, failed computation: one line "<tool>: error: <what>" on
 /// stderr), 2 on a usage error (with a hint to try --help); either message passes through
-/// short_numbers() and printable_line(). --help and --version print to stdout and return 0.
+/// short_numbers() and printable_line(). An OMP_NUM_THREADS that is set but not a whole number from
+/// 1 to kMaxThreads is a usage error (every tool, with or without --threads). --help and --version print to stdout and return 0.
 int run(Tool& tool, int argc, char** argv, const std::function<void()>& body);
 
 /// Logging on stderr, prefixed with the tool's name. `info` and `warn` are silenced by -q (which

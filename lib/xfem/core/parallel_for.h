@@ -9,16 +9,18 @@
 #include <thread>
 #include <vector>
 
+#include "xfem/core/thread_limit.h"
+
 namespace xfem {
 
-/// Runs body(begin, end) over [0, n) in chunks of `chunk` indices, in up to 8 threads (the cores
-/// there are). Every index must be computed independently, so the result does not depend on the
+/// Runs body(begin, end) over [0, n) in chunks of `chunk` indices, in up to thread_limit() threads
+/// (--threads, OMP_NUM_THREADS, else the cores there are, at most 8). Every index must be computed independently, so the result does not depend on the
 /// thread count. `progress` (optional) gets the fraction done from the calling thread. An exception
 /// in a thread (bad_alloc, a CGAL precondition) would call std::terminate: the first one is kept,
 /// the work stops, and it is rethrown on the calling thread after the join.
 inline void parallel_for(long n, const std::function<void(long, long)>& body,
                          const std::function<void(double)>& progress = {}, long chunk = 4096) {
-  const int threads = static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
+  const int threads = thread_limit();
   std::atomic<long> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -36,6 +38,7 @@ inline void parallel_for(long n, const std::function<void(long, long)>& body,
   };
   std::vector<std::thread> pool;
   for (int i = 1; i < threads && n > chunk; ++i) pool.emplace_back(work, false);
+  if (!pool.empty()) note_thread_count();  // the test hook (thread_limit.h): the team is there
   work(true);
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);

@@ -20,6 +20,7 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/core/thread_limit.h"
 
 namespace xfem {
 namespace {
@@ -212,7 +213,7 @@ void write_symmetric_matrix(const SparseMatrix& K, const std::string& path) {
       finished.notify_all();
     }
   };
-  const int workers = blocks == 1 ? 0 : static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
+  const int workers = blocks == 1 ? 0 : std::clamp(thread_limit(), 1, 4);
   std::vector<std::thread> threads;
   struct Join {  // the workers must end before the buffers go, also when writing throws
     std::vector<std::thread>& threads;

@@ -52,7 +52,9 @@ WrittenFrame write_frame(const UncutBody& body, const Problem& problem, const Fr
   WrittenFrame out;
   const double begin = cli::now();
   const EnrichedMesh& em = step->em;
+  const bool pending = step->pending.size() > 0;
   complete_solution(body, *step);
+  if (pending) out.times.back_substitution = step->back_substitution_seconds;
   out.frame = sweep_frame(*step, problem);
   out.times.built = cli::now() - begin;
   write_tet_mesh(out.frame.volume, files.in_dir(numbered("step_", k, ".vtu")), files.packing);

@@ -13,6 +13,7 @@
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
 #include "xfem/core/fingerprint.h"
+#include "xfem/core/thread_limit.h"
 #include "xfem/core/version.h"
 #include "xfem/generate/cut_sweep.h"
 #include "xfem/io/paraview_collection.h"
@@ -110,6 +111,7 @@ void run_sweep(const SweepOptions& o) {
     report["factorization"]["picture_setup_seconds"] = cli::now() - start;
     picture = sweep_pictures(frame, o.scale, o.width, o.height);
   }
+  std::vector<std::pair<int, StepSplit>> cutting;  // the steps that cut something, their time split
   // A written frame, in the main thread: its picture, its entries in the collection, the progress
   // line and the report's row (its step_seconds filled in at the end).
   const auto finish = [&](const WrittenFrame& f) {
@@ -125,6 +127,7 @@ void run_sweep(const SweepOptions& o) {
     collection.push_back({t[k - 1], 1, numbered("step_", k, "_wound.vtp")});
     cli::info(describe_step(*f.step, k, steps, t[k - 1], sweep_steps.incremental(), times, o.png));
     report["steps"].push_back(step_json(*f.step, k, t[k - 1], sweep_steps.incremental(), times));
+    if (f.step->enriched_dofs > 0) cutting.push_back({k, step_split(*f.step, times)});
     if (f.step->unsupported_dofs > 0)
       cli::detail(std::to_string(f.step->unsupported_dofs) + " enriched DOFs without support fixed to 0");
   };
@@ -143,10 +146,12 @@ void run_sweep(const SweepOptions& o) {
   // keeps only one core busy. Its picture is rendered in the main thread, which owns VTK's
   // rendering.
   // Declared after everything its tasks use: its destructor waits for a running one.
-  BackgroundQueue<WrittenFrame> frames;
+  // Held to one thread (--threads 1, OMP_NUM_THREADS=1), the frames are built in the main thread.
+  const bool background = thread_limit() > 1;
+  BackgroundQueue<WrittenFrame> frames(background);
   // More frames waiting than this and the main thread builds the oldest itself: the worker has
   // fallen behind (a loaded machine), and unwritten frames hold their steps' solutions.
-  const std::size_t most_waiting = 2;
+  const std::size_t most_waiting = background ? 2 : 0;
   for (int k = 1; k <= steps; ++k) {
     start = cli::now();
     const bool solved_first = k == steps && last;  // for the pictures' camera, above
@@ -163,6 +168,22 @@ void run_sweep(const SweepOptions& o) {
     wall[k - 1] = cli::now() - start;
   }
   for (int k = 1; k <= steps; ++k) report["steps"][k - 1]["step_seconds"] = wall[k - 1];
+  if (!cutting.empty()) {  // the sweep's time split: per part, its median over the steps that cut
+    std::vector<StepSplit> splits;
+    std::vector<double> walls;
+    for (const auto& [k, split] : cutting) {
+      splits.push_back(split);
+      walls.push_back(wall[k - 1]);
+    }
+    std::sort(walls.begin(), walls.end());
+    const std::size_t h = walls.size() / 2;
+    const double median_wall = walls.size() % 2 ? walls[h] : 0.5 * (walls[h - 1] + walls[h]);
+    const StepSplit median = median_split(splits);
+    cli::info(describe_median_split(median, static_cast<long>(splits.size()), median_wall));
+    report["median_step"] = split_json(median);
+    report["median_step"]["steps"] = static_cast<long>(splits.size());
+    report["median_step"]["step_seconds"] = median_wall;
+  }
   write_paraview_collection(collection, files.in_dir("sweep.pvd"));
   if (!o.report_path.empty()) write_json(report, o.report_path);
 }

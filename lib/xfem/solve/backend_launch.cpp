@@ -15,6 +15,7 @@
 
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
+#include "xfem/core/thread_limit.h"
 #include "xfem/core/version.h"
 #include "xfem/io/petsc_binary.h"
 #include "xfem/solve/petsc_solver.h"
@@ -124,7 +125,7 @@ std::string launch_backend(const std::string& dir, std::string backend, int proc
     if (backend == "auto") backend = processes > 1 ? "petsc" : automatic_backend(dofs, head.n > head.np);
     if (backend == "petsc" && !mpi_child) {
       const int wanted = processes > 0 ? processes
-                                       : automatic_processes(dofs, static_cast<int>(std::thread::hardware_concurrency()));
+                                       : automatic_processes(dofs, thread_limit());
       if (wanted > 1) {
         const std::string program = petsc_program(argv[0], links_petsc);
         // The checks a rank would fail on, here once: one error line instead of one per rank.
