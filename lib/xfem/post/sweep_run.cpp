@@ -182,7 +182,7 @@ void run_sweep(const SweepOptions& o) {
     cli::info(describe_median_split(median, static_cast<long>(splits.size()), median_wall));
     report["median_step"] = split_json(median);
     report["median_step"]["steps"] = static_cast<long>(splits.size());
-    report["median_step"]["step_seconds"] = median_wall;
+    report["median_step"]["wall_seconds"] = median_wall;
   }
   write_paraview_collection(collection, files.in_dir("sweep.pvd"));
   if (!o.report_path.empty()) write_json(report, o.report_path);
