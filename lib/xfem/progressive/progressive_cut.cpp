@@ -96,6 +96,7 @@ void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutS
     if (!pieces[i].constrained)
       throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
                   std::to_string(i + 1) + " (" + std::to_string(pieces[i].tets) + " tets) has no Dirichlet condition");
+  out.enrich_seconds = seconds_since(t1);
 }
 
 // The tets `tets` of `em` alone, in their order, on the points they use renumbered in order (the
