@@ -37,8 +37,12 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
   }
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   // non-branch x non-branch: sum_r V_r a_r a_r^T.
-  const Eigen::Map<const Eigen::VectorXd> V(regions.volume.data(), R);
-  const Eigen::MatrixXd Saa = A.transpose() * V.asDiagonal() * A;
+  // As G^T G of the exact-piece rule (stiffness_from_gradients), with one row sqrt(V_r) a_r per region.
+  Eigen::MatrixXd Ga(R, na);
+  for (int r = 0; r < R; ++r) Ga.row(r) = std::sqrt(regions.volume[r]) * A.row(r);
+  Eigen::MatrixXd Saa = Eigen::MatrixXd::Zero(na, na);
+  Saa.selfadjointView<Eigen::Lower>().rankUpdate(Ga.transpose());
+  Saa.triangularView<Eigen::StrictlyUpper>() = Saa.transpose();
   for (int i = 0; i < na; ++i)
     for (int j = 0; j < na; ++j) S(a_cols[i], a_cols[j]) = Saa(i, j);
 
