@@ -62,9 +62,11 @@ int main(int argc, char** argv) {
       ->check(xfem::cli::range(0, 8));
   app.add_option("--rule", rule, "integration of tets with enriched DOFs: conforming (the default: cut elements "
                                  "split exactly along the cut, one point per piece for the sign enrichment, Gauss "
-                                 "rules collapsed onto the cut front where branch functions live) or oversampling "
-                                 "(the paper's; default: problem.json's integration.rule, else conforming)")
-      ->check(CLI::IsMember({"oversampling", "conforming"}));
+                                 "rules collapsed onto the cut front where branch functions live, the blocks without them in "
+                                 "closed form), graded (the same, the branch functions' points graded toward the front, "
+                                 "--order unused), pieces (the same points for every block, as before issue 35) or "
+                                 "oversampling (the paper's; default: problem.json's integration.rule, else conforming)")
+      ->check(CLI::IsMember({"oversampling", "conforming", "graded", "pieces"}));
   app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
                                    "(default: problem.json's integration.order, else 3)")
       ->check(xfem::cli::range(1, 20));
@@ -83,7 +85,11 @@ int main(int argc, char** argv) {
     xfem::Problem problem = xfem::read_problem(problem_path);
     // K u = f is the small-strain model's: another model needs xfem-newton's nonlinear solve.
     xfem::require_linear_material(problem, "xfem-assemble writes the linear system of the small-strain model");
-    if (!rule.empty()) problem.rule = rule == "conforming" ? xfem::Problem::Rule::Conforming : xfem::Problem::Rule::Oversampling;
+    if (!rule.empty()) {
+      problem.rule = rule == "oversampling" ? xfem::Problem::Rule::Oversampling : xfem::Problem::Rule::Conforming;
+      problem.closed_form = rule != "pieces";
+      problem.graded = rule == "graded";
+    }
     else if (points > 0 || refine >= 0) problem.rule = xfem::Problem::Rule::Oversampling;
     if (order > 0) problem.order = order;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
@@ -100,7 +106,8 @@ int main(int argc, char** argv) {
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
                       std::to_string(problem.neumann.size()) + " Neumann conditions, " +
-                      (conforming ? "--rule conforming --order " + std::to_string(problem.order)
+                      (conforming ? problem.graded ? std::string("--rule graded")
+                                  : std::string(problem.closed_form ? "--rule conforming" : "--rule pieces") + " --order " + std::to_string(problem.order)
                                   : "--points " + std::to_string(points) + ", --refine " + std::to_string(refine)));
     const double read = xfem::cli::now() - start;
 

@@ -100,6 +100,36 @@ TEST_CASE("conforming_quadrature: edge and vertex rules give the volume and inte
   }
 }
 
+TEST_CASE("conforming_quadrature: the plain collapsed rule (s = sigma) integrates cubics with 3 points per direction",
+          "[conforming_quadrature]") {
+  // Degree p exact for 2 radial - 1 >= p + 2 (the Jacobian s (1 - s) adds 2), against 2p + 5 for
+  // s = sigma^2: the graded rule's choice on pieces off the front (TetRuleLayout::graded()).
+  const V p0(0.1, -0.2, 0.05), p1(1.3, 0.1, -0.2), p2(0.2, 0.9, 0.3), p3(0.4, 0.3, 1.1);
+  const double volume = std::abs(xfem::signed_volume(p0, p1, p2, p3));
+  const Eigen::Matrix4d T = (Eigen::Matrix4d() << p0, p1, p2, p3, 1, 1, 1, 1).finished();
+  const Eigen::Matrix4d Tinv = T.inverse();
+  auto lambda = [&](const V& x) { return Eigen::Vector4d(Tinv * Eigen::Vector4d(x[0], x[1], x[2], 1)); };
+  xfem::PointRule plain, squared;
+  xfem::append_edge_rule(p0, p1, p2, p3, 3, 3, 3, 1, plain, false);
+  xfem::append_edge_rule(p0, p1, p2, p3, 3, 3, 3, 1, squared, true);
+  REQUIRE(plain.size() == 27);
+  CHECK(sum(plain.weights) == Approx(volume).epsilon(1e-13));
+  double m_plain = 0, m_squared = 0;
+  for (int q = 0; q < 27; ++q) {
+    const Eigen::Vector4d a = lambda(plain.x[q]), b = lambda(squared.x[q]);
+    m_plain += plain.weights[q] * a[2] * a[3] * a[3];
+    m_squared += squared.weights[q] * b[2] * b[3] * b[3];
+  }
+  const double exact = barycentric_moment(volume, 0, 0, 1, 2);
+  CHECK(m_plain == Approx(exact).epsilon(1e-13));
+  CHECK(std::abs(m_squared - exact) > 1e-6 * exact);  // the sigma^2 rule needs 6 points for this
+  // The graded layout covers a tet without a vertex on the front with the tet's volume.
+  xfem::PointRule graded;
+  xfem::append_tet_rule({p0, p1, p2, p3}, xfem::CrackFront(), xfem::TetRuleLayout::graded(), -1, graded);
+  CHECK(graded.size() == 64);
+  CHECK(sum(graded.weights) == Approx(volume).epsilon(1e-13));
+}
+
 TEST_CASE("conforming_quadrature: 1/r to a front through an edge or a vertex converges to the closed form",
           "[conforming_quadrature]") {
   // Tet (0, e_x, e_y, e_z), front the z axis (through edge 0-3): integral of 1/r, r = sqrt(x^2 + y^2),
@@ -216,8 +246,17 @@ TEST_CASE("conforming_quadrature: problem.json integration.rule and order", "[co
   CHECK(xfem::parse_problem(xfem::Json::parse(R"({"material": {"E": 1, "nu": 0.3}})"), "p.json").rule ==
         xfem::Problem::Rule::Conforming);
   CHECK(parse(R"({"refine": 1})").rule == xfem::Problem::Rule::Oversampling);
-  CHECK_THROWS_WITH(parse(R"({"rule": "gauss"})"),
-                    "problem.json: integration.rule must be \"oversampling\" or \"conforming\", got \"gauss\"");
+  CHECK_THROWS_WITH(parse(R"({"rule": "gauss"})"), "problem.json: integration.rule must be \"oversampling\", "
+                                                   "\"conforming\", \"graded\" or \"pieces\", got \"gauss\"");
+  // "conforming" (the default) computes the blocks without branch functions in closed form,
+  // "pieces" every block from the points (the rule before issue 35), "graded" also lays out the
+  // branch functions' points by TetRuleLayout::graded().
+  const xfem::Problem fallback = xfem::parse_problem(xfem::Json::parse(R"({"material": {"E": 1, "nu": 0.3}})"), "p.json");
+  CHECK((fallback.closed_form && !fallback.graded));
+  const xfem::Problem pieces = parse(R"({"rule": "pieces", "order": 5})");
+  CHECK((pieces.rule == xfem::Problem::Rule::Conforming && !pieces.closed_form && !pieces.graded && pieces.order == 5));
+  const xfem::Problem graded = parse(R"({"rule": "graded"})");
+  CHECK((graded.rule == xfem::Problem::Rule::Conforming && graded.closed_form && graded.graded));
   CHECK_THROWS_WITH(parse(R"({"rule": "conforming", "order": 0})"),
                     "problem.json: integration.order must be an integer in 1..20, got 0");
   CHECK(parse(R"({"rule": "oversampling"})").points == 30);

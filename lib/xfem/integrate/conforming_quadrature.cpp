@@ -60,18 +60,27 @@ void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& w
 
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                       const Eigen::Vector3d& d, int n, int side, PointRule& out) {
-  std::vector<double> g, gw;
-  gauss_legendre_01(n, g, gw);
+  append_edge_rule(a, b, c, d, n, n, n, side, out);
+}
+
+void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                      const Eigen::Vector3d& d, int radial, int along, int across, int side, PointRule& out,
+                      bool squared) {
+  std::vector<double> g, gw, ga, gaw, gc, gcw;
+  gauss_legendre_01(radial, g, gw);
+  gauss_legendre_01(along, ga, gaw);
+  gauss_legendre_01(across, gc, gcw);
   // |det(b-a, c-a, d-c)| = 6 V: the volume is the integral of 6 V s (1-s) over the unit cube.
   const double six_v = std::abs((b - a).cross(c - a).dot(d - c));
-  for (int i = 0; i < n; ++i) {
-    const double sigma = g[i], s = sigma * sigma;
-    const double radial = gw[i] * 2.0 * sigma * s * (1.0 - s) * six_v;  // ds = 2 sigma dsigma
-    for (int j = 0; j < n; ++j) {
-      const Eigen::Vector3d on_ab = a + g[j] * (b - a);
-      for (int k = 0; k < n; ++k) {
-        out.x.push_back((1.0 - s) * on_ab + s * (c + g[k] * (d - c)));
-        out.weights.push_back(radial * gw[j] * gw[k]);
+  for (int i = 0; i < radial; ++i) {
+    const double sigma = g[i], s = squared ? sigma * sigma : sigma;
+    // ds = 2 sigma dsigma (squared), else ds = dsigma
+    const double r = squared ? gw[i] * 2.0 * sigma * s * (1.0 - s) * six_v : gw[i] * s * (1.0 - s) * six_v;
+    for (int j = 0; j < along; ++j) {
+      const Eigen::Vector3d on_ab = a + ga[j] * (b - a);
+      for (int k = 0; k < across; ++k) {
+        out.x.push_back((1.0 - s) * on_ab + s * (c + gc[k] * (d - c)));
+        out.weights.push_back(r * gaw[j] * gcw[k]);
         out.side.push_back(side);
       }
     }
@@ -80,21 +89,54 @@ void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
 
 void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                         const Eigen::Vector3d& d, int n, int side, PointRule& out) {
-  std::vector<double> g, gw;
-  gauss_legendre_01(n, g, gw);
+  append_vertex_rule(a, b, c, d, n, n, side, out);
+}
+
+void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d, int radial, int across, int side, PointRule& out) {
+  std::vector<double> g, gw, gc, gcw;
+  gauss_legendre_01(radial, g, gw);
+  gauss_legendre_01(across, gc, gcw);
   const double six_v = std::abs((b - a).cross(c - a).dot(d - a));
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < radial; ++i) {
     const double sigma = g[i], u = sigma * sigma;
-    const double radial = gw[i] * 2.0 * sigma * u * u * six_v;  // u^2 du, du = 2 sigma dsigma
-    for (int j = 0; j < n; ++j) {
-      const double v = g[j];
-      for (int k = 0; k < n; ++k) {
-        out.x.push_back(a + u * (b - a) + u * v * (c - b) + u * v * g[k] * (d - c));
-        out.weights.push_back(radial * v * gw[j] * gw[k]);
+    const double r = gw[i] * 2.0 * sigma * u * u * six_v;  // u^2 du, du = 2 sigma dsigma
+    for (int j = 0; j < across; ++j) {
+      const double v = gc[j];
+      for (int k = 0; k < across; ++k) {
+        out.x.push_back(a + u * (b - a) + u * v * (c - b) + u * v * gc[k] * (d - c));
+        out.weights.push_back(r * v * gcw[j] * gcw[k]);
         out.side.push_back(side);
       }
     }
   }
+}
+
+TetRuleLayout TetRuleLayout::uniform(int n) {
+  TetRuleLayout l;
+  l.radial = l.along = l.across = l.far = l.distant = n;
+  // Bisection pays only when the Gauss rule itself is accurate: the depth grows with the order
+  // (order 3, the default: 1 level at the front, none away from it; order 7 and up: 8 and 8).
+  l.near_levels = std::min(kMaxLevels, (n - 2) * (n - 2));
+  l.far_levels = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
+  return l;
+}
+
+TetRuleLayout TetRuleLayout::graded() {
+  // Measured on the beam's branch tets against order 8 (docs/PERFORMANCE.md, bench/branch_rule_accuracy):
+  // the error of the uniform order 3 sits in the pieces without a vertex on the front, which its
+  // sigma^2 edge rule integrates as if they were singular (a cubic integrand becomes degree 11 in
+  // sigma). There a plain collapsed rule (s = sigma) of 4 points per direction, one bisection while
+  // the front is nearer than half the piece, and 2 per direction farther than the piece's length;
+  // the pieces on the front keep the order-3 Duffy rules (their integrand is polynomial in sigma
+  // and t there), and the face integrals of the consistent shift take 4 points per direction.
+  TetRuleLayout l = uniform(3);
+  l.far = 4;
+  l.far_squared = false;
+  l.distant = 2;
+  l.distant_ratio = 1.0;
+  l.far_levels = 1;
+  return l;
 }
 
 namespace {
@@ -103,8 +145,8 @@ namespace {
 // passes close to, but not through, the part the Gauss points resolve) is bisected at the midpoint
 // of the edge concerned, the halves keeping the vertices on the front, until the front is at least
 // as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
-void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
-                     PointRule& out, int level) {
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
+                     int side, PointRule& out, int level) {
   static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   auto opposite = [](int i, int j, int& k, int& l) {
     k = -1;
@@ -116,16 +158,13 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
     std::array<Eigen::Vector3d, 4> q = p;
     q[i] = mid;
-    append_tet_rule(q, front, n, side, out, level + 1);
+    append_tet_rule(q, front, layout, side, out, level + 1);
     q = p;
     q[j] = mid;
-    append_tet_rule(q, front, n, side, out, level + 1);
+    append_tet_rule(q, front, layout, side, out, level + 1);
   };
-  // Bisection pays only when the Gauss rule itself is accurate: the depth grows with the order
-  // (order 3, the default: 1 level at the front, none away from it; order 7 and up: 8 and 8).
-  const int max_near = std::min(kMaxLevels, (n - 2) * (n - 2)), max_far = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
-  const bool may_split = level < max_near;
-  int best = 0;
+  const bool may_split = level < layout.near_levels;
+  int best = 0, n = layout.far;
   if (!front.empty()) {
     double longest = 0;
     for (const auto& e : kEdges) longest = std::max(longest, (p[e[0]] - p[e[1]]).norm());
@@ -150,14 +189,14 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         }
       }
       if (may_split && h < kNear * edge) return bisect(e0, e1);
-      append_vertex_rule(p[on[0]], p[j], p[k], p[l], n, side, out);
+      append_vertex_rule(p[on[0]], p[j], p[k], p[l], layout.radial, layout.across, side, out);
       return;
     }
     if (count >= 2) {
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
       if (may_split && front.distance(p[k], p[l]) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
-      append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], n, side, out);
+      append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], layout.radial, layout.along, layout.across, side, out);
       return;
     }
     double nearest = std::numeric_limits<double>::infinity();
@@ -168,30 +207,41 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         best = e;
       }
     }
-    if (level < max_far && nearest < kNearFar * longest) {
+    if (level < layout.far_levels && nearest < kNearFar * longest) {
       for (int e = 0; e < 6; ++e)
         if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
     }
+    if (nearest > layout.distant_ratio * longest) n = layout.distant;
   }
   int k = -1, l = -1;
   opposite(kEdges[best][0], kEdges[best][1], k, l);
-  append_edge_rule(p[kEdges[best][0]], p[kEdges[best][1]], p[k], p[l], n, side, out);
+  append_edge_rule(p[kEdges[best][0]], p[kEdges[best][1]], p[k], p[l], n, n, n, side, out, layout.far_squared);
 }
 
 }  // namespace
 
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out) {
-  append_tet_rule(p, front, n, side, out, 0);
+  append_tet_rule(p, front, TetRuleLayout::uniform(n), side, out, 0);
+}
+
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
+                     int side, PointRule& out) {
+  append_tet_rule(p, front, layout, side, out, 0);
 }
 
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out) {
+  conforming_rule(em, splits, t, TetRuleLayout::uniform(n), out);
+}
+
+void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, const TetRuleLayout& layout,
+                     PointRule& out) {
   out.clear();
   const int i = splits.index.empty() ? -1 : splits.index[t];
   if (i < 0) {
     std::array<Eigen::Vector3d, 4> p;
     for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    append_tet_rule(p, front_of_tet(em, t), n, 0, out);
+    append_tet_rule(p, front_of_tet(em, t), layout, 0, out);
     return;
   }
   // The sign enrichment is constant on each piece and the shape functions linear: one point per
@@ -200,7 +250,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
     const auto& q = splits.tets[s];
     if (branch) {
-      append_tet_rule(q, front_of_tet(em, t), n, splits.side[s], out);
+      append_tet_rule(q, front_of_tet(em, t), layout, splits.side[s], out);
     } else {
       out.x.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
       out.weights.push_back(std::abs(signed_volume(q[0], q[1], q[2], q[3])));

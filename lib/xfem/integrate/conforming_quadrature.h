@@ -57,11 +57,45 @@ void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& w
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                       const Eigen::Vector3d& d, int n, int side, PointRule& out);
 
+/// The same with `radial` Gauss points in sigma, `along` along ab and `across` along cd (the angle
+/// around ab): the integrand near a straight front on ab is polynomial in sigma and t, smooth in w.
+/// `squared` false: s = sigma (a plain collapsed Gauss rule, for bounded integrands: a polynomial of
+/// degree p is exact for 2 radial - 1 >= p + 2 instead of 2p + 5).
+void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                      const Eigen::Vector3d& d, int radial, int along, int across, int side, PointRule& out,
+                      bool squared = true);
+
 /// Vertex-Duffy rule collapsed at a: x = a + u(b-a) + uv(c-b) + uvw(d-c), Jacobian 6 V u^2 v,
 /// u = sigma^2: for integrands singular like 1/r at the vertex (r the distance to a line through a
 /// that does not enter the tet). Polynomials of degree p exact for 2n - 1 >= 2p + 5.
 void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                         const Eigen::Vector3d& d, int n, int side, PointRule& out);
+
+/// The same with `radial` Gauss points in sigma and `across` in each of v, w.
+void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d, int radial, int across, int side, PointRule& out);
+
+/// How append_tet_rule lays out its points: Gauss points per direction of each kind of piece and
+/// how deep pieces near the front are bisected. uniform(n) is the rule of order n (n in every
+/// direction; bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it).
+struct TetRuleLayout {
+  int radial = 3;       ///< pieces with an edge / a vertex on the front: points in the distance to it (sigma)
+  int along = 3;        ///< edge on the front: points along it
+  int across = 3;       ///< edge on the front: points in the angle around it; vertex: in each other direction
+  int far = 3;          ///< pieces without a vertex on the front: n^3 edge rule at the edge nearest to it
+  int distant = 3;      ///< ... those farther than distant_ratio times their longest edge from the front
+  double distant_ratio = 1e300;
+  int near_levels = 1;  ///< bisection levels at most, pieces with a vertex on the front
+  int far_levels = 0;   ///< ... without one
+  bool far_squared = true;  ///< pieces without a vertex on the front: s = sigma^2 (true) or sigma (append_edge_rule)
+  static TetRuleLayout uniform(int n);
+  /// The graded rule (integration.rule "graded"): the order-3 Duffy rules on pieces with a vertex on
+  /// the front; on the others a plain collapsed rule of 4 (2 farther than their size from the
+  /// front) points per direction, bisected once while the front is nearer than half their size.
+  static TetRuleLayout graded();
+  /// Gauss points per direction of the graded rule's face integrals (consistent_gradients.h).
+  static constexpr int graded_consistent_order = 4;
+};
 
 /// The rule for one tet p[0..3] near `front` (may be empty): the vertices within 1e-6 of the tet's
 /// longest edge of the front decide it: two -> edge rule on them, one -> vertex rule at it, none ->
@@ -76,10 +110,16 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 /// final tet with `side`.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out);
+/// The same with any layout (append_tet_rule(p, front, n, ...) is TetRuleLayout::uniform(n)).
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
+                     int side, PointRule& out);
 
 /// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side), or the
 /// tet itself for an uncut one (side 0), each by append_tet_rule with order n.
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out);
+/// The same with any layout of the front-singular rules (TetRuleLayout).
+void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, const TetRuleLayout& layout,
+                     PointRule& out);
 
 /// The gradients of tet t's enriched basis at the points of `rule` (q x 3|C|: row p, column 3c + a
 /// holds dPhi_c/dx_a at point p, the order of its C), evaluated with each point's side; with

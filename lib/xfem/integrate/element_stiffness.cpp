@@ -63,6 +63,11 @@ void stiffness_from_gradients(const Eigen::MatrixXd& G, const Lame& material, Ei
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   S.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
   S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+  stiffness_from_moments(S, material, k);
+}
+
+void stiffness_from_moments(const Eigen::MatrixXd& S, const Lame& material, Eigen::MatrixXd& k) {
+  const int n = static_cast<int>(S.cols() / 3);
   k.resize(3 * n, 3 * n);
   const double mu = material.mu, la = material.lambda;
   for (int a = 0; a < n; ++a)

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "xfem/integrate/closed_form_stiffness.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
@@ -83,7 +84,7 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
-                              int conforming_order) {
+                              int conforming_order, bool closed_form, bool graded) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -124,7 +125,14 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
       FaceIntegralCache faces;
       for (long i = begin; i < end; ++i) {
         const int t = enriched[static_cast<std::size_t>(first + i)];
-        if (conforming_order > 0) {
+        if (conforming_order > 0 && closed_form) {
+          // Points for the branch functions only: the other blocks need the side volumes alone.
+          if (!em.branch(t)) points.clear();
+          else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
+          else conforming_rule(em, splits, t, conforming_order, points);
+          closed_form_stiffness(em, splits, t, points, material, ks[i],
+                                graded ? TetRuleLayout::graded_consistent_order : conforming_order, &faces);
+        } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
           element_stiffness_at_points(em, t, points, material, ks[i], conforming_order, &faces);
         } else {
@@ -200,7 +208,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
-                           conforming ? problem.order : 0);
+                           conforming ? problem.order : 0, problem.closed_form, problem.graded);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
   dirichlet_data(em, problem, sys.fixed, sys.fixed_values);

@@ -28,11 +28,14 @@ struct AssemblyStats {
 /// connectivity (every pair of DOFs sharing a tet, explicit zeros included, so the pattern does not
 /// depend on the values) and element matrices are scattered straight into it: tets with |C| = 4
 /// plain DOFs use the closed-form linear-tet stiffness, the others the oversampling `rule`, or, with
-/// conforming_order n > 0, the cut-conforming rule of order n (conforming_quadrature.h; `rule` unused).
+/// conforming_order n > 0, the cut-conforming rule of order n (conforming_quadrature.h; `rule` unused),
+/// with `closed_form` the blocks without branch functions in closed form (closed_form_stiffness.h),
+/// else every block from the points (element_stiffness_at_points: integration.rule "pieces"); with
+/// `graded` (and closed_form) the branch functions' points by TetRuleLayout::graded() instead of order n.
 /// `progress` (optional) gets the fraction of tets done.
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
-                              int conforming_order = 0);
+                              int conforming_order = 0, bool closed_form = true, bool graded = false);
 
 /// The load vector f (3N, newtons; paper formula (7)) on the ORIGINAL DOFs only (DESIGN.md):
 /// body force b V/4 to each node of each tet (exact for linear N), traction t A/3 to each node of

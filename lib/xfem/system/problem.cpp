@@ -222,9 +222,11 @@ Problem parse_problem(const Json& j, const std::string& file) {
     if (integration.has("rule")) {
       const Node rule = integration.at("rule");
       const std::string name = rule.string();
-      if (name != "oversampling" && name != "conforming")
-        rule.fail("must be \"oversampling\" or \"conforming\", got \"" + name + "\"");
-      p.rule = name == "conforming" ? Problem::Rule::Conforming : Problem::Rule::Oversampling;
+      if (name != "oversampling" && name != "conforming" && name != "graded" && name != "pieces")
+        rule.fail("must be \"oversampling\", \"conforming\", \"graded\" or \"pieces\", got \"" + name + "\"");
+      p.rule = name == "oversampling" ? Problem::Rule::Oversampling : Problem::Rule::Conforming;
+      p.closed_form = name != "pieces";
+      p.graded = name == "graded";
     } else if (integration.has("points") || integration.has("refine")) {
       p.rule = Problem::Rule::Oversampling;  // files written before the conforming default keep their meaning
     }

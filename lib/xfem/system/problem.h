@@ -83,6 +83,14 @@ struct Problem {
   enum class Rule { Oversampling, Conforming };
   Rule rule = Rule::Conforming;
   int order = 3;        ///< conforming rule: Gauss points per direction (1..20) where branch functions live
+  /// Conforming rule: the blocks without branch functions in closed form from the side volumes
+  /// and the branch functions' cross terms from one sum per side (closed_form_stiffness.h; the
+  /// default, integration.rule "conforming"), or every block from the points (integration.rule
+  /// "pieces": the rule before issue 35, the same numbers up to round-off).
+  bool closed_form = true;
+  /// Conforming rule, closed form: the branch functions' points laid out by TetRuleLayout::graded()
+  /// (integration.rule "graded"; `order` unused) instead of the uniform rule of `order`.
+  bool graded = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
@@ -90,7 +98,7 @@ struct Problem {
 
 /// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
 /// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
-/// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box,
+/// refine outside 0..8, a rule other than "oversampling" / "conforming" / "graded" / "pieces", an order outside 1..20, a zero normal, an empty box,
 /// an unknown material.model, a load_steps outside 1..1000000, e.g. "problem.json: material.E must be positive, got -3".
 Problem read_problem(const std::string& path);
 /// The same from parsed JSON; `file` names it in messages.

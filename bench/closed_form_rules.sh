@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Cost of the conforming rule's variants on one enriched mesh (issue 35): xfem-assemble's whole wall
+# time and its own "enriched tets" time for --rule pieces (every block from the points, the rule
+# before issue 35), conforming (closed-form blocks, the default) and graded, runs alternated,
+# medians printed with the load. Usage: bench/closed_form_rules.sh BIN ENRICHED.vtu CUT PROBLEM [RUNS]
+#   e.g. bench/closed_form_rules.sh build/tools organ-enriched.vtu cut.vtp pipelines/organ/problem.json 7
+set -euo pipefail
+bin=$1 enriched=$2 cut=$3 problem=$4 runs=${5:-7}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+declare -A wall enr
+rules=("--rule pieces" "--rule conforming" "--rule graded")
+echo "load before: $(uptime | sed 's/.*load average: //')"
+for ((i = 0; i < runs; ++i)); do
+  for r in "${rules[@]}"; do
+    start=$(date +%s.%N)
+    t=$("$bin/xfem-assemble" "$enriched" --cut "$cut" --problem "$problem" $r -o "$tmp/sys" 2>&1 |
+        sed -n 's/.*enriched tets \([0-9.]*\) s.*/\1/p')
+    wall[$r]+="$(echo "$(date +%s.%N) - $start" | bc) "
+    enr[$r]+="$t "
+  done
+done
+median() { tr ' ' '\n' | grep . | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+base=$(echo ${enr["--rule pieces"]} | median)
+for r in "${rules[@]}"; do
+  m=$(echo ${enr[$r]} | median); w=$(echo ${wall[$r]} | median)
+  awk -v r="$r" -v m="$m" -v w="$w" -v b="$base" \
+    'BEGIN {printf "%-20s xfem-assemble median %6.3f s, enriched tets %6.3f s (%.2fx pieces)\n", r, w, m, m / b}'
+done
+echo "load after: $(uptime | sed 's/.*load average: //')"

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/integrate/closed_form_stiffness.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "xfem/core/error.h"
+#include "xfem/enrich/enriched_basis.h"
+#include "xfem/geometry/tet_shape.h"
+#include "xfem/integrate/side_volumes.h"
+
+namespace xfem {
+
+void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
+                           const Lame& material, Eigen::MatrixXd& k, int consistent_order,
+                           FaceIntegralCache* face_cache) {
+  const int n = em.size(t);
+  const long base = em.offsets[t];
+  const long first_branch = em.np + em.ns;
+  // Columns of the non-branch functions (a) and of the branch functions (b).
+  std::vector<int> a_cols, b_cols;
+  for (int c = 0; c < n; ++c)
+    for (int d = 0; d < 3; ++d) (em.dofs[base + c] < first_branch ? a_cols : b_cols).push_back(3 * c + d);
+  const int na = static_cast<int>(a_cols.size()), nb = static_cast<int>(b_cols.size());
+
+  // Non-branch gradients per region, constant there: evaluated once, at a point inside it.
+  const SideVolumes regions = side_volumes(em.mesh, splits, t);
+  const int R = regions.size();
+  const TetShape shape = tet_shape(em.mesh, t);
+  Eigen::MatrixXd A(R, na);  // row r: a_r
+  BasisAt basis;
+  for (int r = 0; r < R; ++r) {
+    enriched_basis(em, t, shape, regions.point[r], regions.side[r], basis);
+    for (int i = 0; i < na; ++i) A(r, i) = basis.dN(a_cols[i] / 3, a_cols[i] % 3);
+  }
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  // non-branch x non-branch: sum_r V_r a_r a_r^T.
+  // As G^T G of the exact-piece rule (stiffness_from_gradients), with one row sqrt(V_r) a_r per region.
+  Eigen::MatrixXd Ga(R, na);
+  for (int r = 0; r < R; ++r) Ga.row(r) = std::sqrt(regions.volume[r]) * A.row(r);
+  Eigen::MatrixXd Saa = Eigen::MatrixXd::Zero(na, na);
+  Saa.selfadjointView<Eigen::Lower>().rankUpdate(Ga.transpose());
+  Saa.triangularView<Eigen::StrictlyUpper>() = Saa.transpose();
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < na; ++j) S(a_cols[i], a_cols[j]) = Saa(i, j);
+
+  if (nb > 0) {
+    Eigen::MatrixXd G;
+    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, G);
+    const int q = branch_rule.size();
+    Eigen::MatrixXd B(q, nb);      // sqrt(w_p) b_p
+    Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(R, nb);  // row r: sum over p in r of w_p b_p
+    for (int p = 0; p < q; ++p) {
+      const auto found = std::find(regions.side.begin(), regions.side.end(), branch_rule.side[p]);
+      if (found == regions.side.end())
+        throw Error("closed-form stiffness of tet " + std::to_string(t) + ": an integration point has side " +
+                    std::to_string(branch_rule.side[p]) + ", which no piece of the tet has");
+      const int r = static_cast<int>(found - regions.side.begin());
+      const double w = branch_rule.weights[p], sw = std::sqrt(w);
+      for (int i = 0; i < nb; ++i) {
+        const double g = G(p, b_cols[i]);
+        sums(r, i) += w * g;
+        B(p, i) = sw * g;
+      }
+    }
+    Eigen::MatrixXd Sbb = Eigen::MatrixXd::Zero(nb, nb);
+    Sbb.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());
+    Sbb.triangularView<Eigen::StrictlyUpper>() = Sbb.transpose();
+    const Eigen::MatrixXd Sab = A.transpose() * sums;
+    for (int i = 0; i < nb; ++i)
+      for (int j = 0; j < nb; ++j) S(b_cols[i], b_cols[j]) = Sbb(i, j);
+    for (int i = 0; i < na; ++i)
+      for (int j = 0; j < nb; ++j) S(a_cols[i], b_cols[j]) = S(b_cols[j], a_cols[i]) = Sab(i, j);
+  }
+  stiffness_from_moments(S, material, k);
+}
+
+}  // namespace xfem
