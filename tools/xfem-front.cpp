@@ -115,6 +115,8 @@ int main(int argc, char** argv) {
                                                      : xfem::FrontAuxiliary::Curvilinear;
     const double R = options.radius > 0 ? options.radius : xfem::default_domain_radius(em);
     options.radius = R;
+    const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
+    options.materials = &materials;
     const auto points = xfem::front_stress_intensity(em, u, problem.E, problem.nu, problem.body_force, options,
                                                      xfem::cli::progress("interaction integrals"));
     int reaching = 0;
