@@ -16,9 +16,12 @@
   check-patch DEFORMED.vtu ENRICHED.vtu --exact FIELD.json
       deformed.vtu of the two-material patch test: every point's displacement the field's, every
       cell's stress sigma e_x e_x (both regions), its strain its region's (by its parent tet's
-      region in ENRICHED.vtu, whose tets are the input's). Relative 1e-10.
+      region in ENRICHED.vtu, whose tets are the input's). Relative 1e-10. deformed.vtu's cell
+      array `region` is each cell's parent's.
   same-values A.mtx B.mtx
       the same numbers (the fingerprint comments aside, which name the problem file).
+  close-values A.mtx B.mtx
+      the same numbers to 1e-10 of B's largest.
 
 FIELD.json: {"sigma": S, "split": C, "E": [E1, E2], "ratio": R, "translation": [tx, ty, tz]}: uniaxial
 stress S along x (the interface's normal) with nu / E = R in both regions, so that the lateral
@@ -179,6 +182,10 @@ def cmd_check_patch(a):
         failures.append(f"strain error {eerr:.3g} > 1e-10 x {gmax:.3g}: each region has its own strain")
     if len(seen) != 2:
         failures.append(f"cells of {len(seen)} regions in deformed.vtu, expected 2")
+    # deformed.vtu's own `region`: each cell its parent's.
+    shown = d["cell"].get("region")
+    if shown is None or any(int(r_) != region[int(p_)] for r_, p_ in zip(shown, d["cell"]["parent"])):
+        failures.append("deformed.vtu's cell array 'region' is missing or not each cell's parent tet's region")
     for x in failures:
         print(x)
     return 1 if failures else 0
@@ -191,6 +198,14 @@ def cmd_same_values(a):
         print(f"{a.a} and {a.b} differ: {len(x)} / {len(y)} values, first difference at {diff[:1]}")
         return 1
     return 0
+
+
+def cmd_close_values(a):
+    x, y = read_mtx(a.a), read_mtx(a.b)
+    scale = max(abs(v) for v in y)
+    err = max(abs(p - q) for p, q in zip(x, y)) if len(x) == len(y) else float("inf")
+    print(f"max |{a.a} - {a.b}| = {err:.3g} (largest value {scale:.3g})")
+    return 0 if err <= 1e-10 * scale else 1
 
 
 def main():
@@ -223,9 +238,12 @@ def main():
     s = sub.add_parser("same-values")
     s.add_argument("a")
     s.add_argument("b")
+    v = sub.add_parser("close-values")
+    v.add_argument("a")
+    v.add_argument("b")
     a = p.parse_args()
     return {"regions": cmd_regions, "msh": cmd_msh, "check-bar": cmd_check_bar, "check-patch": cmd_check_patch,
-            "same-values": cmd_same_values}[a.cmd](a)
+            "same-values": cmd_same_values, "close-values": cmd_close_values}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@
 #     plane, grid faces, a zigzag, two pieces), each side moved rigidly: cut_catalogue.py's checks
 #     (displacement and zero strain to 1e-10, volumes, wound areas); xfem-front refuses a domain
 #     spanning the interface;
+#   - xfem-sweep across the interface: each step the tools' solution with the same materials;
 #   - bad `materials`: an unknown region (by id and by name, listing the mesh's), E <= 0, a region
 #     listed twice, a bad type: one error line each, no output.
 # Helpers: test/e2e/materials.py.
@@ -182,4 +183,30 @@ grep -q '"nb": [1-9]' disc/system/system.json || fail "the disc has no branch DO
 "$B/xfem-front" disc/enriched.vtu --cut disc.vtp --solution disc/u.mtx --problem patch.json -o disc/front.vtp 2>err.txt
 [ $? -eq 1 ] && [ "$(grep -c "error:" err.txt)" -eq 1 ] && grep -q "holds tets of two materials (regions" err.txt &&
   [ ! -e disc/front.vtp ] || fail "xfem-front with a domain across the interface: $(cat err.txt)"
+# xfem-sweep: a blade moving along x across the interface; each step's solution equals the tools'
+# (classify .. solve) on that step's cut with the same materials, and not the one-material one.
+$M cut-sweep --path 0.05 0.43 1.2 0.95 0.43 1.2 --depth 0.6 --resolution 0.1 -o sweep.vtp || fail "cut-sweep"
+cat >sweep.json <<'JSON'
+{"material": {"E": 1e3, "nu": 0.3}, "materials": [{"region": "soft", "E": 150, "nu": 0.45}],
+ "dirichlet": [{"name": "bottom", "selector": {"box": {"lo": [-1, -1, -1], "hi": [2, 2, 0]}}, "value": [0, 0, 0]}],
+ "neumann": [{"name": "side", "selector": {"box": {"lo": [1, -1, -1], "hi": [2, 2, 2]}}, "traction": [-5, 2, 1]}],
+ "body_force": [0, 0, -30]}
+JSON
+"$B/xfem-sweep" -q patch.vtu --cut sweep.vtp --problem sweep.json --steps 3 -o frames --solutions --cuts ||
+  fail "xfem-sweep with two materials"
+python3 -c "import sys; sys.exit(0 if 'Name=\"region\"' in open('frames/step_003.vtu', 'rb').read().decode('latin-1') else 1)" ||
+  fail "the sweep's frames have no region array"
+for k in 002 003; do
+  chain patch.vtu frames/cut_$k.vtp sweep.json step_$k
+  $PY close-values frames/u_$k.mtx step_$k/u.mtx || fail "sweep step $k differs from the tools' solution"
+done
+sed 's/"materials": \[[^]]*\],//' sweep.json >sweep_one.json
+grep -q materials sweep_one.json && fail "sweep_one.json still has materials"
+"$B/xfem-sweep" -q patch.vtu --cut sweep.vtp --problem sweep_one.json --steps 3 -o frames_one --solutions ||
+  fail "xfem-sweep with one material"
+$PY same-values frames/u_003.mtx frames_one/u_003.mtx >/dev/null && fail "the sweep's solution does not depend on the materials"
+sed 's/"region": "soft"/"region": "liver"/' sweep.json >sweep_bad.json
+"$B/xfem-sweep" patch.vtu --cut sweep.vtp --problem sweep_bad.json --steps 3 -o frames_bad 2>err.txt
+[ $? -eq 1 ] && grep -qF "sweep_bad.json: materials[0].region 'liver' is not a region of patch.vtu (its regions: 1 'stiff', 2 'soft')" err.txt &&
+  [ ! -e frames_bad ] || fail "xfem-sweep with an unknown region: $(cat err.txt)"
 echo "materials: all checks passed"
