@@ -48,8 +48,8 @@ int main(int argc, char** argv) {
                                         "needed when the mesh has enriched DOFs (N > NP); several cuts: once per "
                                         "cut, as given to xfem-classify")
       ->allow_extra_args(false);
-  app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
-                                               "dirichlet, neumann, body_force)")->required();
+  app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, materials (one "
+                                               "per region of the mesh), integration, dirichlet, neumann, body_force)")->required();
   app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
                                      "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
                                      "with m^3 > points, one centroid point each (default: problem.json's "

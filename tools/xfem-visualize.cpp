@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
                                         "to xfem-classify")
       ->allow_extra_args(false);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
-  app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, model, for the stresses)")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material, materials per region: stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
   app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp, or .vtu: a grid of triangles)");
   app.add_option("--reactions", reactions_path, "xfem-solve --reactions output (3N x 1, N): written as the point "
