@@ -85,6 +85,13 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
                               int conforming_order, bool closed_form, bool graded) {
+  return stiffness_matrix(em, TetMaterials(MaterialLaw{MaterialModel::Linear, material}), rule, stats, progress,
+                          conforming_order, closed_form, graded);
+}
+
+SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
+                              AssemblyStats* stats, const std::function<void(double)>& progress,
+                              int conforming_order, bool closed_form, bool graded) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -103,7 +110,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
       enriched.push_back(t);
       continue;
     }
-    scatter_plain_tet(em, p, outer, t, material, values);
+    scatter_plain_tet(em, p, outer, t, materials.lame(t), values);
     if (progress && (t & 0xffff) == 0) progress(double(t) / tets);
   }
   s.standard_tets += tets - static_cast<long>(enriched.size());
@@ -130,13 +137,13 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
           if (!em.branch(t)) points.clear();
           else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
           else conforming_rule(em, splits, t, conforming_order, points);
-          closed_form_stiffness(em, splits, t, points, material, ks[i],
+          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i],
                                 graded ? TetRuleLayout::graded_consistent_order : conforming_order, &faces);
         } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
-          element_stiffness_at_points(em, t, points, material, ks[i], conforming_order, &faces);
+          element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
         } else {
-          element_stiffness(em, t, rule, material, ks[i]);
+          element_stiffness(em, t, rule, materials.lame(t), ks[i]);
         }
       }
     }, {}, chunk);
@@ -197,6 +204,11 @@ std::vector<long> unsupported_dofs(const SparseMatrix& K, long first) {
 LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int points, int refine,
                              AssemblyStats* stats,
                              const std::function<void(double)>& progress) {
+  return assemble_system(em, problem, tet_materials(problem, em.mesh, "the mesh"), points, refine, stats, progress);
+}
+
+LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, const TetMaterials& materials, int points,
+                             int refine, AssemblyStats* stats, const std::function<void(double)>& progress) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   LinearSystem sys;
@@ -207,7 +219,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   const bool conforming = problem.rule == Problem::Rule::Conforming;
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
-  sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
+  sys.K = stiffness_matrix(em, materials, oversampling_quadrature(points, refine), &s, progress,
                            conforming ? problem.order : 0, problem.closed_form, problem.graded);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
