@@ -62,6 +62,9 @@ class Cursor {
     while (pos_ < text_.size() && !std::strchr(" \t\r\n", text_[pos_])) ++pos_;
   }
 
+  // Bytes after the position.
+  std::size_t left() const { return text_.size() - pos_; }
+
   // Checks that `count` binary values of `bytes` bytes each follow.
   void require(std::uint64_t count, std::uint64_t bytes, const char* what) const {
     if (bytes != 0 && count > (text_.size() - pos_) / bytes)
@@ -242,6 +245,51 @@ NodeTags check_msh41_nodes(Cursor& in, bool binary, const std::string& path) {
   return tags;
 }
 
+// MSH 4.1 $Entities: four counts (points, curves, surfaces, volumes), then each entity: its tag, a
+// point (3 doubles) or a bounding box (6), its physical tags (a count and the tags) and, but for a
+// point, its bounding entities (a count and the tags). libgmsh allocates by each count before it
+// reads what the count announces: a count beyond the file's size asked for up to 2^63 bytes
+// (std::bad_alloc out of the library, an abort under ASan) or looped for minutes. Every count is
+// checked against the bytes left (ASCII: at least 2 per value), every value read.
+void check_msh41_entities(Cursor& in, bool binary, const std::string& path) {
+  const auto count = [&](const char* what, std::uint64_t bytes_each) -> unsigned long long {
+    unsigned long long n = 0;
+    if (binary) {
+      n = in.binary<std::uint64_t>(what);
+      in.require(n, bytes_each, what);
+    } else {
+      const long long v = in.integer(what);
+      if (v < 0) throw Error(path + ": " + what + " in the $Entities section is negative");
+      n = static_cast<unsigned long long>(v);
+      if (n > in.left() / 2)  // a digit and a separator at least
+        throw Error(path + ": " + what + " " + std::to_string(n) + " in the $Entities section is more than the file holds");
+    }
+    return n;
+  };
+  const auto tag = [&](const char* what) {
+    if (binary)
+      in.binary<std::int32_t>(what);
+    else
+      in.integer(what);
+  };
+  const auto real = [&](const char* what) {
+    if (binary)
+      in.binary<double>(what);
+    else
+      in.word(what);
+  };
+  unsigned long long counts[4];
+  for (int d = 0; d < 4; ++d) counts[d] = count("an entity count", 4 + 3 * 8 + 8);
+  for (int d = 0; d < 4; ++d)
+    for (unsigned long long e = 0; e < counts[d]; ++e) {
+      tag("an entity's tag");
+      for (int k = 0; k < (d == 0 ? 3 : 6); ++k) real("an entity's coordinate");
+      for (unsigned long long k = count("an entity's physical tag count", 4); k > 0; --k) tag("a physical tag");
+      if (d > 0)
+        for (unsigned long long k = count("an entity's bounding entity count", 4); k > 0; --k) tag("a bounding entity");
+    }
+}
+
 void check_msh41(Cursor& in, Entities& entities, bool binary, const std::string& path, const NodeTags& nodes) {
   const auto size = [&](const char* what) {
     return binary ? static_cast<long long>(in.binary<std::uint64_t>(what)) : in.integer(what);
@@ -289,6 +337,7 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
   std::size_t after_format = std::string::npos;  // where a binary file's byte order mark is
   std::vector<std::size_t> element_sections;       // positions after their "$Elements" line
   std::vector<std::size_t> node_sections;          // positions after their "$Nodes" line
+  std::vector<std::size_t> entity_sections;        // positions after their "$Entities" line
   bool msh1 = false;
   for (std::size_t at = 0; at < text.size();) {
     Cursor in(text, at, path);
@@ -300,9 +349,10 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
     }
     if (line == "$Elements") element_sections.push_back(at);
     if (line == "$Nodes") node_sections.push_back(at);
+    if (line == "$Entities") entity_sections.push_back(at);
     if (line == "$ELM") msh1 = true;
   }
-  if (element_sections.empty() && node_sections.empty() && !msh1) return;
+  if (element_sections.empty() && node_sections.empty() && entity_sections.empty() && !msh1) return;
   const bool msh2 = starts_with(version, "2.") || version == "2", msh41 = version == "4.1";
   if (msh1 || !(msh2 || msh41))
     throw Error(path + ": MSH version " + (msh1 ? std::string("1") : "'" + version.substr(0, 20) + "'") +
@@ -316,6 +366,11 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
       throw Error(path + ": a binary .msh file of another byte order is not read (save it as ASCII)");
   }
   if (node_sections.size() > 1) throw Error(path + ": the file has " + std::to_string(node_sections.size()) + " $Nodes sections");
+  if (msh41)
+    for (std::size_t at : entity_sections) {
+      Cursor in(text, at, path, "$Entities");
+      check_msh41_entities(in, binary, path);
+    }
   NodeTags nodes;
   if (msh41 && !node_sections.empty()) {
     Cursor in(text, node_sections[0], path, "$Nodes");
