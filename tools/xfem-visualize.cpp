@@ -8,6 +8,7 @@
 #include "xfem/post/deformed_mesh.h"
 #include "xfem/post/deformed_volume.h"
 #include "xfem/post/solution_provenance_check.h"
+#include "xfem/post/visualize_outputs.h"
 #include "xfem/geometry/element_split.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/core/error.h"
@@ -78,6 +79,7 @@ int main(int argc, char** argv) {
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(output, {".vtu"});
     if (!faces.empty()) xfem::cli::check_output(faces, {".vtp", ".vtu"});
+    if (faces == output) throw xfem::Error(output + ": given as both -o and --faces");
     if (!png.empty()) xfem::cli::check_output(png, {".png"});
     if (!png.empty() && !std::getenv("DISPLAY"))
       throw xfem::Error(png + ": rendering needs an X display; run under 'xvfb-run -a' (DISPLAY is unset)");
@@ -146,9 +148,8 @@ int main(int argc, char** argv) {
       o.view = camera;
     }
     if (!png.empty()) xfem::write_snapshot(body.volume, body.wound, png, o);
-    const xfem::Compression packing = xfem::compression_named(compression);
-    xfem::write_tet_mesh(body.volume, output, packing);
-    if (!faces.empty()) xfem::write_triangle_mesh(body.wound, faces, packing);
+    xfem::write_visualize_outputs(body, output, faces, xfem::compression_named(compression),
+                                  xfem::visualize_inputs_fingerprint(em, u, problem_path, wound_offset));
     if (!script.empty())
       xfem::write_paraview_script(script, output, faces, camera, xfem::colour_top(body.volume), scale);
   });

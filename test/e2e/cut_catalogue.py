@@ -7,14 +7,18 @@
       rigid motion of its side (above / below, two different small rotations and translations), or
       with --linear uniaxial tension along x (for horizontal cuts whose front lies inside the body);
       exact.json: the same field for xfem-rmserror --exact.
-  cut MESH.vtu --through node|edge|face|front-on-face -o cut.obj
+  cut MESH.vtu --through node|edge|face|front-on-face|front-node -o cut.obj
       a planar cut on an unstructured mesh through a node, containing an interior edge (not its
-      faces), containing an interior face, or ending on an interior face (front inside it); the
-      mesh's own coordinates are the cut's vertices, so "through" is exact.
+      faces), containing an interior face, ending on an interior face (front inside it), or
+      ending at a front through a node; the mesh's own coordinates are the cut's vertices, so
+      "through" is exact.
   check --cut CUT --deformed deformed.vtu --wound wound.vtp --box LO HI --mode through|front|miss
         [--rms error.json] [--exact exact.json]
       the opened visualization and the patch test's figures; prints one line per failed check,
-      exits 1 if any.
+      exits 1 if any (deformed.vtu and wound.vtp of different runs are one).
+  pair deformed.vtu wound.vtp
+      exit 0 if both carry the same inputs_fingerprint (one xfem-visualize run), 1 if they differ,
+      2 if either has none.
 
 The true volumes and areas come from the cut file itself, independently of the tools: every cut
 of the catalogue is a height field z = f(x, y) (one or more disjoint sheets, none vertical), so
@@ -354,6 +358,17 @@ def cmd_cut(args):
              (lo[0] - big, hi[1] + big, z)]
         write_obj(args.output, c, [(0, 1, 2), (0, 2, 3)], (0, 0, 1))
         return
+    if args.through == "front-node":
+        # A horizontal strip through the interior node N nearest the centre, ending at the
+        # front x = N_x: the front, a line across the body, passes through N.
+        k = min(range(len(pts)), key=lambda i: (norm(sub(pts[i], centre)), i))
+        x, z = pts[k][0], pts[k][2]
+        big = 2 * size
+        # From x - 0.12 size: enriched nodes stay off the face x = lo, where tension along x pulls.
+        w = x - 0.12 * size
+        c = [(w, lo[1] - big, z), (x, lo[1] - big, z), (x, hi[1] + big, z), (w, hi[1] + big, z)]
+        write_obj(args.output, c, [(0, 1, 2), (0, 2, 3)], (0, 0, 1))
+        return
     if args.through in ("face", "edge"):
         f = max(faces, key=lambda f: score(f, True))
         p = [pts[i] for i in f]
@@ -392,15 +407,47 @@ def cmd_cut(args):
 # ---------------------------------------------------------------------------------------------
 # check: the opened visualization and the patch test.
 
+def inputs_fingerprint(data):
+    """xfem-visualize's field array inputs_fingerprint as 'fnv1a64:<hex>', None if absent."""
+    f = data["field"].get("inputs_fingerprint")
+    if not f or len(f) != 2:
+        return None
+    return "fnv1a64:%016x" % ((int(f[0]) << 32) | int(f[1]))
+
+
+def cmd_pair(args):
+    """deformed.vtu and wound.vtp of one xfem-visualize run? (docs/FORMATS.md "wound.vtp")"""
+    a, b = inputs_fingerprint(read_vtk_xml(args.deformed)), inputs_fingerprint(read_vtk_xml(args.wound))
+    if a is None or b is None:
+        print(f"no inputs_fingerprint in {args.deformed if a is None else args.wound}")
+        return 2
+    if a != b:
+        print(f"{args.wound} ({b}) is not of the run that wrote {args.deformed} ({a})")
+        return 1
+    print(f"same run: {a}")
+    return 0
+
+
 def cmd_check(args):
     lo, hi = tuple(args.box[:3]), tuple(args.box[3:])
     box_volume = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
     failures = []
     fail = failures.append
-    cpts, ctris = read_surface(args.cut)
-    sheets = sheets_of(cpts, ctris)
     d = read_vtk_xml(args.deformed)
     pts, cells = d["points"], d["cells"]
+    if args.mode == "clean":
+        # A cut that is no height field (a vertical blade): the tools' stderr is checked by the
+        # caller; here the split body's volume and the pair's fingerprints only.
+        total = sum(tet_volume([pts[i] for i in c]) for c in cells)
+        if abs(total - box_volume) > 1e-12 * box_volume:
+            fail(f"deformed.vtu total volume {total:.17g} != body {box_volume:.17g}")
+        if args.wound and inputs_fingerprint(read_vtk_xml(args.wound)) != inputs_fingerprint(d):
+            fail(f"{args.wound} and {args.deformed} are not of one xfem-visualize run")
+        for f in failures:
+            print(f)
+        return 1 if failures else 0
+    cpts, ctris = read_surface(args.cut)
+    sheets = sheets_of(cpts, ctris)
     side = [int(s) for s in d["cell"]["piece_side" if "piece_side" in d["cell"] else "side"]]
     vol = {-1: 0.0, 0: 0.0, 1: 0.0}
     for c, s in zip(cells, side):
@@ -489,6 +536,9 @@ def cmd_check(args):
     # Wound area: every triangle twice, once per side; each side = the cut's area in the body.
     if args.wound:
         w = read_vtk_xml(args.wound)
+        if inputs_fingerprint(w) != inputs_fingerprint(d):
+            fail(f"{args.wound} and {args.deformed} are not of one xfem-visualize run (inputs_fingerprint "
+                 f"{inputs_fingerprint(w)} != {inputs_fingerprint(d)})")
         wa = {-1: 0.0, 1: 0.0}
         for t, s in zip(w["cells"], w["cell"].get("side", [])):
             p = [w["points"][i] for i in t]
@@ -544,18 +594,21 @@ def main():
     p.add_argument("--linear", action="store_true")
     p = sp.add_parser("cut")
     p.add_argument("mesh")
-    p.add_argument("--through", choices=["node", "edge", "face", "front-on-face"], required=True)
+    p.add_argument("--through", choices=["node", "edge", "face", "front-on-face", "front-node"], required=True)
     p.add_argument("-o", "--output", required=True)
     p = sp.add_parser("check")
     p.add_argument("--cut", required=True)
     p.add_argument("--deformed", required=True)
     p.add_argument("--wound")
     p.add_argument("--box", type=float, nargs=6, required=True)
-    p.add_argument("--mode", choices=["through", "front", "miss"], required=True)
+    p.add_argument("--mode", choices=["through", "front", "miss", "clean"], required=True)
     p.add_argument("--rms")
     p.add_argument("--exact")
+    p = sp.add_parser("pair")
+    p.add_argument("deformed")
+    p.add_argument("wound")
     a = ap.parse_args()
-    sys.exit({"problem": cmd_problem, "cut": cmd_cut, "check": cmd_check}[a.command](a) or 0)
+    sys.exit({"problem": cmd_problem, "cut": cmd_cut, "check": cmd_check, "pair": cmd_pair}[a.command](a) or 0)
 
 
 if __name__ == "__main__":

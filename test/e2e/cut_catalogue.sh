@@ -9,7 +9,8 @@
 #     deformed.vtu's volume on each side = the body's volume on that side (1e-12 relative, the true
 #     volume integrated from the cut's own triangles), no cell straddling the cut, wound.vtp's
 #     area on each side = the cut's area inside the body;
-#   - cuts with a front inside the body (disc, ending on a face; both horizontal): uniaxial tension
+#   - cuts with a front inside the body (disc, ending on a face, a front through a node; all
+#     horizontal or tilted about x): uniaxial tension
 #     along x (traction-free on the cut, so the cut stays closed) on all faces is reproduced exactly:
 #     nodes, the strain of every cell; total volume, wound area and the pieces behind the front as above;
 #   - a cut missing the body: no enrichment, the plain linear solution, every cell whole.
@@ -57,6 +58,18 @@ make_cut() {  # make_cut <case> <mesh s|u> <out>
     face-end)  # z = 0.47, x in [0.29, 0.5], y in [0.29, 0.71]: the front x = 0.5 lies on grid faces
       [ "$m" = s ] && $M cut-rect --corner 0.29 0.29 0.47 --edge1 0.21 0 0 --edge2 0 0.42 0 -o "$o" \
                    || $PY cut "$S/u.vtu" --through front-on-face -o "$o" ;;
+    front-node)  # the front passes through an interior node: z = 0.375 + y/4 for 0.3 <= x <= 0.5,
+      # the front x = 0.5 through the node (0.5, 0.5, 0.5) only; unstructured: z = N_z for
+      # N_x - 0.12 <= x <= N_x, N the interior node nearest the centre. Horizontal or tilted about x:
+      # traction-free under tension along x; across the body in y, off the faces x = 0, 1.
+      [ "$m" = s ] && $M cut-rect --corner 0.3 -0.5 0.25 --edge1 0.2 0 0 --edge2 0 2 0.5 -o "$o" \
+                   || $PY cut "$S/u.vtu" --through front-node -o "$o" ;;
+    blade-node)  # issue 36 item 8: a blade (0.6 deep) swept along an arc ending above the top face's
+      # node (0.5, 0.5, 1): its front, vertical, passes through that node (structured: and the
+      # nodes below it). The elements that touch the front only at a node were split face by face,
+      # 19 faces (structured) with one split edge and no front point. No height field: checked
+      # for warnings, the split body's volume and the pair's fingerprints only (mode clean).
+      $M cut-sweep --arc-centre 0.5 -0.5 1.1 --arc-radius 1 --arc-angles 30 90 --depth 0.6 --resolution 0.05 -o "$o" ;;
     two-pieces)  # z = 0.3 (normal +z) and z = 0.7 (normal -z): the middle slab is the +1 side
       $M cut-rect --corner -0.5 -0.5 0.3 --edge1 2 0 0 --edge2 0 2 0 -o "$o.a.vtp" &&
       $M cut-rect --corner -0.5 -0.5 0.7 --edge1 0 2 0 --edge2 2 0 0 -o "$o.b.vtp" &&
@@ -67,7 +80,7 @@ make_cut() {  # make_cut <case> <mesh s|u> <out>
   esac
 }
 mode_of() {
-  case "$1" in disc|face-end) echo front ;; miss) echo miss ;; *) echo through ;; esac
+  case "$1" in disc|face-end|front-node) echo front ;; miss) echo miss ;; blade-node) echo clean ;; *) echo through ;; esac
 }
 
 # One case: every stage without -q, stderr kept; prints the case's failures, returns 1 if any.
@@ -75,8 +88,8 @@ run_case() {  # run_case <mesh s|u> <cut name>
   local m=$1 c=$2 d="$S/$1-$2" mode problem exact
   mkdir -p "$d"; mode=$(mode_of "$c")
   problem="$S/problem.json"; exact="$S/exact.json"
-  [ "$mode" != through ] && { problem="$S/problem_linear.json"; exact="$S/exact_linear.json"; }
-  local cut="$d/cut.vtp"; [ "$m" = u ] && case "$c" in nodes|faces|edge|face-end) cut="$d/cut.obj" ;; esac
+  [ "$mode" = front ] || [ "$mode" = miss ] && { problem="$S/problem_linear.json"; exact="$S/exact_linear.json"; }
+  local cut="$d/cut.vtp"; [ "$m" = u ] && case "$c" in nodes|faces|edge|face-end|front-node) cut="$d/cut.obj" ;; esac
   make_cut "$c" "$m" "$cut" 2>"$d/cut.err" || { echo "making the cut failed: $(head -1 "$d/cut.err")"; return 1; }
   local stage
   stage() {  # stage <name> <command...>: run, keep stderr in $d/<name>.err
@@ -107,7 +120,7 @@ run_case() {  # run_case <mesh s|u> <cut name>
   return $rc
 }
 
-CASES="nodes faces edge zigzag zigzag-dense sine disc face-end two-pieces touching miss"
+CASES="nodes faces edge zigzag zigzag-dense sine disc face-end front-node blade-node two-pieces touching miss"
 failed=""; known=""; fixed=""
 for c in $CASES; do
   for m in s u; do

@@ -124,3 +124,35 @@ TEST_CASE("atomic_file: extension_of is the lower-case last extension with its d
   CHECK(xfem::extension_of("dir.d/noext") == "");
   CHECK(xfem::extension_of("-") == "");
 }
+
+TEST_CASE("atomic_file: files written together appear only when all are written", "[atomic_file]") {
+  const auto dir = scratch_dir("together");
+  const std::string a = dir + "/deformed.vtu", b = dir + "/wound.vtp";
+  write_text(a, "old body");
+  write_text(b, "old wound");
+  // The second writer fails: neither target changes (the first one's new content was written
+  // to its temporary only), and no temporary is left.
+  CHECK_THROWS_WITH(xfem::write_atomically_together(
+                        {{a, [](const std::string& tmp) { write_text(tmp, "new body"); }},
+                         {b, [](const std::string& tmp) {
+                            write_text(tmp, "half a wou");
+                            throw xfem::Error("wound.vtp: disk full");
+                          }}}),
+                    "wound.vtp: disk full");
+  CHECK(slurp(a) == "old body");
+  CHECK(slurp(b) == "old wound");
+  CHECK(listing(dir) == std::vector<std::string>{"deformed.vtu", "wound.vtp"});
+  // Both written: while the second is written the first is not yet in place.
+  xfem::write_atomically_together({{a, [](const std::string& tmp) {
+                                      CHECK(xfem::extension_of(tmp) == ".vtu");
+                                      write_text(tmp, "new body");
+                                    }},
+                                   {b, [&](const std::string& tmp) {
+                                      CHECK(slurp(a) == "old body");
+                                      CHECK(fs::path(tmp).parent_path() == fs::path(dir));
+                                      write_text(tmp, "new wound");
+                                    }}});
+  CHECK(slurp(a) == "new body");
+  CHECK(slurp(b) == "new wound");
+  CHECK(listing(dir) == std::vector<std::string>{"deformed.vtu", "wound.vtp"});
+}

@@ -34,6 +34,20 @@ TEST_CASE("dirichlet: elimination keeps K_ff and moves K_fc u_c to the right-han
   CHECK_THROWS_WITH(xfem::eliminate_dirichlet(K, f, {0, 1, 2}, {0, 0, 0}), Catch::Matchers::Contains("every DOF"));
 }
 
+TEST_CASE("dirichlet: with no load the residual is absolute: 0 for u = 0, never 0/0", "[dirichlet]") {
+  // f_f = 0 and u_c = 0: the reduced right-hand side is zero and so is the exact u_free; the
+  // relative residual would be 0/0 (NaN), so the absolute one is reported.
+  const xfem::SparseMatrix K = small_K();
+  const Eigen::Vector3d f = Eigen::Vector3d::Zero();
+  const xfem::ReducedSystem r = xfem::eliminate_dirichlet(K, f, {1}, {0.0});
+  REQUIRE(r.f.squaredNorm() == 0.0);
+  const Eigen::VectorXd zero = xfem::expand_solution(r, Eigen::Vector2d::Zero(), {1}, {0.0});
+  CHECK(xfem::relative_residual(K, f, zero, r) == 0.0);
+  // A wrong answer is measured absolutely: ||(K u)_f|| = ||(3 * 1e-3, 0)||.
+  const Eigen::VectorXd off = xfem::expand_solution(r, Eigen::Vector2d(1e-3, 0), {1}, {0.0});
+  CHECK(xfem::relative_residual(K, f, off, r) == Approx(3e-3).epsilon(1e-15));
+}
+
 TEST_CASE("dirichlet: a system without Dirichlet condition or with a loose piece is refused by name", "[dirichlet]") {
   using Catch::Matchers::Contains;
   xfem::LinearSystem s;

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -136,7 +137,8 @@ TEST_CASE("gmsh: bad .msh files give one error line naming the file", "[gmsh]") 
   write_text(hexes, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
                     "5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n$EndNodes\n$Elements\n1\n1 5 2 0 1 1 2 3 4 5 6 7 8\n$EndElements\n");
   CHECK_THROWS_WITH(xfem::read_tet_mesh(garbage), Contains(garbage + ": cannot read the gmsh file: "));
-  CHECK_THROWS_WITH(xfem::read_tet_mesh(truncated), Contains(truncated + ": cannot read the gmsh file"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(truncated),  // the $Nodes check reads it first
+                    Contains(truncated + ": the smallest node tag in the $Nodes section is not a whole number"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(hexes), Contains(hexes + ": the mesh has Hexahedron 8 (gmsh element type 5)"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(scratch("missing.msh")), Contains("missing.msh: cannot open"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(data + "square41.msh"), Contains("square41.msh: no tetrahedra"));
@@ -418,6 +420,16 @@ std::string three_tets(const std::string& elements, bool names = true) {
          "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n6 2 2 2\n$EndNodes\n$Elements\n" +
          elements + "$EndElements\n";
 }
+// msh41_binary(0, 0) with the std::size_t at byte `offset` after "$Nodes\n" (or after
+// "$Elements\n") replaced by `value`.
+std::string patched_msh41(const char* section, std::size_t offset, std::size_t value) {
+  std::string s = msh41_binary(0, 0);
+  const std::size_t at = s.find(section) + std::strlen(section) + offset;
+  std::memcpy(&s[at], &value, sizeof value);
+  return s;
+}
+
+
 }  // namespace
 
 TEST_CASE("gmsh: physical volumes are the regions, with their names", "[gmsh][regions]") {
@@ -457,4 +469,83 @@ TEST_CASE("gmsh: a mesh without physical volumes has no regions; a tet in two is
   write_text(twice, three_tets("2\n1 4 2 4 1 1 2 3 4\n2 4 2 9 1 2 3 4 5\n"));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(twice), Contains(twice + ": tetrahedron ") &&
                                                     Contains(" is in the physical volumes 4 and 9 (one region per tet)"));
+}
+
+TEST_CASE("gmsh: the $Nodes section is checked before gmsh reads it", "[gmsh]") {
+  // $Nodes of MSH 4.1 binary: 4 size_t (blocks, nodes, min tag, max tag), then a block: 3 int32
+  // (dim, entity, parametric) and a size_t (count), its 35 tags (size_t), their coordinates.
+  const std::size_t first_tag = 4 * 8 + 3 * 4 + 8;
+  const auto refused = [](const std::string& name, const std::string& text) {
+    const std::string path = scratch(name);
+    write_text(path, text);
+    try {
+      xfem::read_tet_mesh(path);
+    } catch (const xfem::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  // A node tag beyond the header's largest: libgmsh wrote out of bounds (SIGSEGV).
+  CHECK(refused("tag_high.msh", patched_msh41("$Nodes\n", first_tag + 34 * 8, 1000000)) ==
+        scratch("tag_high.msh") + ": node tag 1000000 in the $Nodes section is outside the range 1 to 35 its header gives");
+  CHECK(refused("tag_zero.msh", patched_msh41("$Nodes\n", first_tag, 0)) ==
+        scratch("tag_zero.msh") + ": node tag 0 in the $Nodes section is outside the range 1 to 35 its header gives");
+  CHECK(refused("tag_twice.msh", patched_msh41("$Nodes\n", first_tag + 8, 1)) ==
+        scratch("tag_twice.msh") + ": node tag 1 is given twice in the $Nodes section");
+  // Counts that disagree: the header's node count, the block's, the tag range.
+  CHECK(refused("count.msh", patched_msh41("$Nodes\n", 8, 34)) ==
+        scratch("count.msh") + ": the $Nodes section's header gives 34 nodes, its blocks hold at least 35");
+  CHECK(refused("range.msh", patched_msh41("$Nodes\n", 24, 20)) ==
+        scratch("range.msh") + ": the $Nodes section's header gives 35 nodes with tags 1 to 20");
+  CHECK(refused("blocks.msh", patched_msh41("$Nodes\n", 0, std::size_t(1) << 60)) ==
+        scratch("blocks.msh") + ": the file ends inside its binary $Nodes section (in the node blocks)");
+  CHECK(refused("block.msh", patched_msh41("$Nodes\n", 4 * 8 + 3 * 4, std::size_t(1) << 60)) ==
+        scratch("block.msh") + ": the $Nodes section's header gives 35 nodes, its blocks hold at least 1152921504606846976");
+  const std::size_t fourth_node = 4 * 8 + 3 * 4 + 8 + 8 + 3 * 8;
+  // An element naming a node the $Nodes section does not have.
+  // $Elements: 4 size_t, then dim, entity, type (int32), count (size_t), then the element's tag and 4 nodes.
+  CHECK(refused("element_node.msh", patched_msh41("$Elements\n", fourth_node, 36)) ==
+        scratch("element_node.msh") + ": an element in the $Elements section has node 36, outside the node tags 1 to 35");
+  // Element node tags that libgmsh turns into negative ints crashed it (SIGSEGV), one above 2^32
+  // read as node 1.
+  for (const std::size_t tag : {std::size_t(2147483651u), ~std::size_t(0), (std::size_t(1) << 32) + 1}) {
+    INFO(tag);
+    CHECK(refused("element_huge.msh", patched_msh41("$Elements\n", fourth_node, tag)) ==
+          scratch("element_huge.msh") + ": an element in the $Elements section has node " + std::to_string(tag) +
+              ", outside the node tags 1 to 35");
+  }
+  // A node tag above 2^32 (read as its low 32 bits) is out of the header's range.
+  CHECK(refused("tag_wrap.msh", patched_msh41("$Nodes\n", first_tag, (std::size_t(1) << 32) + 1)) ==
+        scratch("tag_wrap.msh") + ": node tag 4294967297 in the $Nodes section is outside the range 1 to 35 its header gives");
+  // The file as written still reads.
+  CHECK(refused("whole.msh", msh41_binary(0, 0)) == "read");
+}
+
+TEST_CASE("gmsh: MSH 2 node tags that gmsh's int cannot hold are refused", "[gmsh]") {
+  // libgmsh read 2^32 + 1 as node 1: the mesh read without a word, wrong.
+  const auto refused = [](const std::string& name, const std::string& text) {
+    const std::string path = scratch(name);
+    write_text(path, text);
+    try {
+      xfem::read_tet_mesh(path);
+    } catch (const xfem::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  std::string text = msh22(4, 4, 0, 0);
+  text.replace(text.find("1 4 2 0 1 1 2 3 4"), 17, "1 4 2 0 1 1 2 3 4294967300");
+  CHECK(refused("element_wrap.msh", text) == scratch("element_wrap.msh") +
+                                                 ": an element in the $Elements section has node 4294967300, outside "
+                                                 "gmsh's node tags 1 to 2147483647");
+  text = msh22(4, 4, 0, 0);
+  text.replace(text.find("\n4 "), 3, "\n4294967300 ");
+  CHECK(refused("node_wrap.msh", text) == scratch("node_wrap.msh") +
+                                              ": the $Nodes section has node tag 4294967300, outside gmsh's node tags 1 "
+                                              "to 2147483647");
+  text = msh22(4, 4, 0, 0);
+  text.replace(text.find("\n35 "), 4, "\n0 ");
+  CHECK(refused("node_zero.msh", text) ==
+        scratch("node_zero.msh") + ": the $Nodes section has node tag 0, outside gmsh's node tags 1 to 2147483647");
+  CHECK(refused("whole22.msh", msh22(4, 4, 0, 0)) == "read");
 }

@@ -194,6 +194,14 @@ TEST_CASE("hostile: the fuzzing regressions are rejected cleanly", "[hostile][fu
       {"problem", [](const std::string& p) { xfem::read_problem(p); }},
       {"exact", [](const std::string& p) { xfem::read_exact_field(p); }},
       {"system", [](const std::string& p) { xfem::read_linear_system(system_dir(p)); }},
+      {"msh", [](const std::string& p) {  // as fuzz_msh reads it: as a body, then as a cut
+         try {
+           xfem::read_tet_mesh(p);
+         } catch (const xfem::Error& e) {
+           CHECK(std::string(e.what()).find(p) == 0);
+         }
+         xfem::read_triangle_mesh(p);
+       }},
   };
   int files = 0;
   for (const auto& dir : fs::directory_iterator(std::string(XFEM_TEST_DATA) + "/fuzz-regressions")) {

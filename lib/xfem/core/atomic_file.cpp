@@ -13,26 +13,56 @@
 
 namespace xfem {
 
+namespace {
+
+// The temporary of `path` (number `index` of several written together): a hidden name in the
+// target's directory, keeping the target's extension (VTK writers choose their format by it).
+std::string temporary_of(const std::string& path, std::size_t index) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir)) throw Error(path + ": directory " + dir.string() + " does not exist");
+  return (dir / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
+                 (index > 0 ? "_" + std::to_string(index) : std::string()) + target.extension().string()))
+      .string();
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw Error(path + ": cannot rename temporary file: " + ec.message());
+}
+
+}  // namespace
+
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   if (path == "-") {
     write(path);
     return;
   }
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir)) throw Error(path + ": directory " + dir.string() + " does not exist");
-  // The temporary keeps the target's extension: VTK writers choose their format by it.
-  const std::string tmp = (dir / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                                  target.extension().string()))
-                              .string();
+  const std::string tmp = temporary_of(path, 0);
   try {
     write(tmp);
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) throw Error(path + ": cannot rename temporary file: " + ec.message());
+    rename_into_place(tmp, path);
   } catch (...) {
     std::remove(tmp.c_str());
+    throw;
+  }
+}
+
+void write_atomically_together(const std::vector<FileWriter>& files) {
+  std::vector<std::string> temporaries;
+  try {
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      const std::string& path = files[k].first;
+      temporaries.push_back(path == "-" ? path : temporary_of(path, k + 1));
+      files[k].second(temporaries.back());
+    }
+    for (std::size_t k = 0; k < files.size(); ++k)
+      if (files[k].first != "-") rename_into_place(temporaries[k], files[k].first);
+  } catch (...) {
+    for (std::size_t k = 0; k < temporaries.size(); ++k)
+      if (files[k].first != "-") std::remove(temporaries[k].c_str());
     throw;
   }
 }

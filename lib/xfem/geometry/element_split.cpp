@@ -406,6 +406,29 @@ SplitMesh split(const TetMesh& mesh, const std::vector<int>& side, const std::ve
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   s.add_edges(edges);
+  // A completely cut element with an edge between nodes of opposite sides that the cut does not
+  // meet: the front passes through one of its nodes or edges (a front through a mesh node, the
+  // element classified completely cut by the round-off rule). Split face by face, its faces with
+  // one split edge would have no front point; it is split exactly at the front instead, as an
+  // element the front runs through (the cut catalogue's "front through a node").
+  std::vector<char> front_touched(cut_tets.size(), 0);
+  std::vector<long> touched;
+  for (std::size_t i = 0; i < cut_tets.size(); ++i) {
+    const int t = cut_tets[i];
+    if (cut_class[t] != 2) continue;
+    bool split = false, open = false;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (side[mesh.tets(t, a)] != side[mesh.tets(t, b)]) (s.edge_point(mesh.tets(t, a), mesh.tets(t, b)) >= 0 ? split : open) = true;
+    if (split && open) {
+      front_touched[i] = 1;
+      touched.push_back(static_cast<long>(i));
+    }
+  }
+  parallel_for(static_cast<long>(touched.size()), [&](long begin, long end) {
+    for (long k = begin; k < end; ++k)
+      exact[touched[k]] = exact_split(mesh, cut_tets[touched[k]], true, side, *cut_surface, front);
+  }, {}, 8);
   // Uncut tets are kept whole, turned positive: their orientations too, in parallel.
   std::vector<char> inverted(nt, 0);
   parallel_for(nt, [&](long begin, long end) {
@@ -482,7 +505,7 @@ SplitMesh split(const TetMesh& mesh, const std::vector<int>& side, const std::ve
     // An element the front passes through, or one the cut separates but not in one plane (a fold
     // inside it): its exact pieces, computed above (also, unused, for a completely cut element
     // whose edges are split only in part); here its new points get their ids.
-    const bool partial = cut_class[t] == 1;
+    const bool partial = cut_class[t] == 1 || front_touched[next_exact];
     const ExactSplit* pieces = &exact[next_exact++];
     if (partial || ((closed || !any_split) && pieces->exact)) {
       const int first = np + static_cast<int>(s.points_.size());

@@ -20,8 +20,8 @@ namespace {
 // The file's bytes and a position in them; every read is bounded by the end of the file.
 class Cursor {
  public:
-  Cursor(const std::string& text, std::size_t pos, const std::string& path)
-      : text_(text), pos_(std::min(pos, text.size())), path_(path) {}
+  Cursor(const std::string& text, std::size_t pos, const std::string& path, const char* section = "$Elements")
+      : text_(text), pos_(std::min(pos, text.size())), path_(path), section_(section) {}
 
   // The rest of the line, without its '\r'.
   std::string line() {
@@ -40,7 +40,7 @@ class Cursor {
     while (pos_ < text_.size() && text_[pos_] >= '0' && text_[pos_] <= '9' && pos_ - start < 18) ++pos_;
     const std::string word = text_.substr(start, pos_ - start);
     if (word.empty() || word == "-" || word == "+" || (pos_ < text_.size() && !std::strchr(" \t\r\n", text_[pos_])))
-      throw Error(path_ + ": " + what + " in the $Elements section is not a whole number of at most 17 digits (or the file ends there)");
+      throw Error(path_ + ": " + what + " in the " + section_ + " section is not a whole number of at most 17 digits (or the file ends there)");
     return std::stoll(word);
   }
 
@@ -48,24 +48,41 @@ class Cursor {
   template <class T>
   T binary(const char* what) {
     if (text_.size() - pos_ < sizeof(T))
-      throw Error(path_ + ": the file ends inside its binary $Elements section (at " + what + ")");
+      throw Error(path_ + ": the file ends inside its binary " + section_ + " section (at " + what + ")");
     T value;
     std::memcpy(&value, text_.data() + pos_, sizeof(T));
     pos_ += sizeof(T);
     return value;
   }
 
+  // Skips one ASCII word (a coordinate): its value is gmsh's to judge, its presence ours.
+  void word(const char* what) {
+    while (pos_ < text_.size() && std::strchr(" \t\r\n", text_[pos_])) ++pos_;
+    if (pos_ == text_.size()) throw Error(path_ + ": the file ends inside its " + section_ + " section (at " + what + ")");
+    while (pos_ < text_.size() && !std::strchr(" \t\r\n", text_[pos_])) ++pos_;
+  }
+
+  // Bytes after the position.
+  std::size_t left() const { return text_.size() - pos_; }
+
+  // Checks that `count` binary values of `bytes` bytes each follow.
+  void require(std::uint64_t count, std::uint64_t bytes, const char* what) const {
+    if (bytes != 0 && count > (text_.size() - pos_) / bytes)
+      throw Error(path_ + ": the file ends inside its binary " + section_ + " section (in " + what + ")");
+  }
+
   // Skips `count` binary values of `bytes` bytes each.
   void skip(std::uint64_t count, std::uint64_t bytes, const char* what) {
-    if (bytes != 0 && count > (text_.size() - pos_) / bytes)
-      throw Error(path_ + ": the file ends inside its binary $Elements section (in " + what + ")");
+    require(count, bytes, what);
     pos_ += static_cast<std::size_t>(count * bytes);
   }
 
  private:
+ private:
   const std::string& text_;
   std::size_t pos_;
   const std::string& path_;
+  const char* section_;
 };
 
 // The element types of each entity, by shape ("Tetrahedron", "Triangle", ...): one per shape.
@@ -114,7 +131,14 @@ class Entities {
   std::array<long long, 3> last_{-2, 0, 0};
 };
 
-void check_msh2_ascii(Cursor& in, Entities& entities) {
+// libgmsh reads MSH 2 node tags as int: a tag above 2^31 - 1 wrapped (2^32 + 1 read as node 1,
+// a silently wrong mesh). Tags are 1 to 2^31 - 1.
+void check_msh2_tag(long long tag, const char* what, const std::string& path) {
+  if (tag < 1 || tag > 2147483647)
+    throw Error(path + ": " + what + " " + std::to_string(tag) + ", outside gmsh's node tags 1 to 2147483647");
+}
+
+void check_msh2_ascii(Cursor& in, Entities& entities, const std::string& path) {
   const long long count = in.integer("the element count");
   for (long long e = 0; e < count; ++e) {  // number type ntags tag_1 .. tag_ntags node_1 .. node_n
     in.integer("an element number");
@@ -126,7 +150,17 @@ void check_msh2_ascii(Cursor& in, Entities& entities) {
       if (k == 1) elementary = tag;
     }
     entities.add(-1, elementary, type);
-    for (int k = 0; k < entities.type(type).nodes; ++k) in.integer("an element's node");
+    for (int k = 0; k < entities.type(type).nodes; ++k) check_msh2_tag(in.integer("an element's node"), "an element in the $Elements section has node", path);
+  }
+}
+
+// MSH 2 ASCII $Nodes: the count, then "tag x y z" per node.
+void check_msh2_nodes(Cursor& in, const std::string& path) {
+  const long long count = in.integer("the node count");
+  if (count < 0) throw Error(path + ": the node count in the $Nodes section is negative");
+  for (long long k = 0; k < count; ++k) {
+    check_msh2_tag(in.integer("a node tag"), "the $Nodes section has node tag", path);
+    for (int c = 0; c < 3; ++c) in.word("a node's coordinate");
   }
 }
 
@@ -151,7 +185,112 @@ void check_msh2_binary(Cursor& in, Entities& entities, const std::string& path) 
   }
 }
 
-void check_msh41(Cursor& in, Entities& entities, bool binary, const std::string& path) {
+// The node tags of a MSH 4.1 $Nodes section: the range its header gives, every tag checked.
+struct NodeTags {
+  bool known = false;  // false: no $Nodes section (gmsh then refuses any element)
+  unsigned long long min = 0, max = 0;
+};
+
+// libgmsh trusts the $Nodes header: it sizes its node table from the node count and the tag
+// range and stores each node at its tag, so a tag outside the range, a block larger than the
+// count or a tag given twice made it write out of bounds (SIGSEGV). Each is refused here.
+NodeTags check_msh41_nodes(Cursor& in, bool binary, const std::string& path) {
+  const auto size = [&](const char* what) -> unsigned long long {
+    if (binary) return in.binary<std::uint64_t>(what);
+    const long long v = in.integer(what);
+    if (v < 0) throw Error(path + ": " + what + " in the $Nodes section is negative");
+    return static_cast<unsigned long long>(v);
+  };
+  const auto int32 = [&](const char* what) -> long long {
+    return binary ? in.binary<std::int32_t>(what) : in.integer(what);
+  };
+  const unsigned long long blocks = size("the node block count"), count = size("the node count");
+  NodeTags tags{true, size("the smallest node tag"), size("the largest node tag")};
+  if (binary) in.require(blocks, 20, "the node blocks");  // 3 int32 and a size_t each at least
+  if (count > 0 && (tags.min > tags.max || tags.max - tags.min + 1 < count))
+    throw Error(path + ": the $Nodes section's header gives " + std::to_string(count) + " nodes with tags " +
+                std::to_string(tags.min) + " to " + std::to_string(tags.max));
+  std::vector<unsigned long long> seen;
+  for (unsigned long long b = 0; b < blocks; ++b) {  // entityDim entityTag parametric count; tags; coordinates
+    const long long dim = int32("an entity's dimension");
+    int32("an entity's tag");
+    const long long parametric = int32("a node block's parametric flag");
+    const unsigned long long n = size("a node block's count");
+    if (dim < 0 || dim > 3 || parametric < 0 || parametric > 1)
+      throw Error(path + ": node block " + std::to_string(b) + " has entity dimension " + std::to_string(dim) +
+                  " or parametric flag " + std::to_string(parametric));
+    if (n > count - std::min<unsigned long long>(count, seen.size()))
+      throw Error(path + ": the $Nodes section's header gives " + std::to_string(count) + " nodes, its blocks hold at least " +
+                  (n <= ~0ull - seen.size() ? std::to_string(seen.size() + n) : std::string("2^64")));
+    if (binary) in.require(n, 8, "a node block's tags");
+    for (unsigned long long k = 0; k < n; ++k) {
+      const unsigned long long tag = size("a node tag");
+      if (tag < tags.min || tag > tags.max)
+        throw Error(path + ": node tag " + std::to_string(tag) + " in the $Nodes section is outside the range " +
+                    std::to_string(tags.min) + " to " + std::to_string(tags.max) + " its header gives");
+      seen.push_back(tag);
+    }
+    const unsigned long long values = 3 + static_cast<unsigned long long>(parametric) * static_cast<unsigned long long>(dim);
+    if (binary)
+      in.skip(n, 8 * values, "a node block's coordinates");
+    else
+      for (unsigned long long k = 0; k < n * values; ++k) in.word("a node's coordinate");
+  }
+  if (seen.size() != count)
+    throw Error(path + ": the $Nodes section's header gives " + std::to_string(count) + " nodes, its blocks hold " +
+                std::to_string(seen.size()));
+  std::sort(seen.begin(), seen.end());
+  if (const auto twice = std::adjacent_find(seen.begin(), seen.end()); twice != seen.end())
+    throw Error(path + ": node tag " + std::to_string(*twice) + " is given twice in the $Nodes section");
+  return tags;
+}
+
+// MSH 4.1 $Entities: four counts (points, curves, surfaces, volumes), then each entity: its tag, a
+// point (3 doubles) or a bounding box (6), its physical tags (a count and the tags) and, but for a
+// point, its bounding entities (a count and the tags). libgmsh allocates by each count before it
+// reads what the count announces: a count beyond the file's size asked for up to 2^63 bytes
+// (std::bad_alloc out of the library, an abort under ASan) or looped for minutes. Every count is
+// checked against the bytes left (ASCII: at least 2 per value), every value read.
+void check_msh41_entities(Cursor& in, bool binary, const std::string& path) {
+  const auto count = [&](const char* what, std::uint64_t bytes_each) -> unsigned long long {
+    unsigned long long n = 0;
+    if (binary) {
+      n = in.binary<std::uint64_t>(what);
+      in.require(n, bytes_each, what);
+    } else {
+      const long long v = in.integer(what);
+      if (v < 0) throw Error(path + ": " + what + " in the $Entities section is negative");
+      n = static_cast<unsigned long long>(v);
+      if (n > in.left() / 2)  // a digit and a separator at least
+        throw Error(path + ": " + what + " " + std::to_string(n) + " in the $Entities section is more than the file holds");
+    }
+    return n;
+  };
+  const auto tag = [&](const char* what) {
+    if (binary)
+      in.binary<std::int32_t>(what);
+    else
+      in.integer(what);
+  };
+  const auto real = [&](const char* what) {
+    if (binary)
+      in.binary<double>(what);
+    else
+      in.word(what);
+  };
+  unsigned long long counts[4];
+  for (int d = 0; d < 4; ++d) counts[d] = count("an entity count", 4 + 3 * 8 + 8);
+  for (int d = 0; d < 4; ++d)
+    for (unsigned long long e = 0; e < counts[d]; ++e) {
+      tag("an entity's tag");
+      for (int k = 0; k < (d == 0 ? 3 : 6); ++k) real("an entity's coordinate");
+      for (unsigned long long k = count("an entity's physical tag count", 4); k > 0; --k) tag("a physical tag");
+      if (d > 0)
+        for (unsigned long long k = count("an entity's bounding entity count", 4); k > 0; --k) tag("a bounding entity");
+    }
+}
+
+void check_msh41(Cursor& in, Entities& entities, bool binary, const std::string& path, const NodeTags& nodes) {
   const auto size = [&](const char* what) {
     return binary ? static_cast<long long>(in.binary<std::uint64_t>(what)) : in.integer(what);
   };
@@ -166,12 +305,21 @@ void check_msh41(Cursor& in, Entities& entities, bool binary, const std::string&
       throw Error(path + ": element block " + std::to_string(b) + " has entity dimension " + std::to_string(dim) +
                   " or element count " + std::to_string(count));
     entities.add(static_cast<int>(dim), tag, type);
-    const int nodes = entities.type(type).nodes;
-    if (binary) {
-      in.skip(static_cast<std::uint64_t>(count), 8ull * (1 + static_cast<std::uint64_t>(nodes)), "an element block");
-    } else {
-      for (long long e = 0; e < count; ++e)
-        for (int k = 0; k <= nodes; ++k) in.integer("an element's tag or node");
+    const int per_element = entities.type(type).nodes;
+    if (binary) in.require(static_cast<std::uint64_t>(count), 8ull * (1 + static_cast<std::uint64_t>(per_element)), "an element block");
+    for (long long e = 0; e < count; ++e) {
+      size("an element's tag");
+      for (int k = 0; k < per_element; ++k) {
+        const long long node = binary ? static_cast<long long>(in.binary<std::uint64_t>("an element's node"))
+                                      : in.integer("an element's node");
+        // libgmsh looks a node up by its tag without a bound on every path: a tag it has no node
+        // for is refused here (negative: a size_t above 2^63)
+        if (nodes.known && (node < 0 || static_cast<unsigned long long>(node) < nodes.min ||
+                            static_cast<unsigned long long>(node) > nodes.max))
+          throw Error(path + ": an element in the $Elements section has node " +
+                      (binary ? std::to_string(static_cast<unsigned long long>(node)) : std::to_string(node)) + ", outside the node tags " +
+                      std::to_string(nodes.min) + " to " + std::to_string(nodes.max));
+      }
     }
   }
 }
@@ -188,6 +336,8 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
   std::string version, file_type, data_size;
   std::size_t after_format = std::string::npos;  // where a binary file's byte order mark is
   std::vector<std::size_t> element_sections;       // positions after their "$Elements" line
+  std::vector<std::size_t> node_sections;          // positions after their "$Nodes" line
+  std::vector<std::size_t> entity_sections;        // positions after their "$Entities" line
   bool msh1 = false;
   for (std::size_t at = 0; at < text.size();) {
     Cursor in(text, at, path);
@@ -198,9 +348,11 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
       after_format = std::min(text.find('\n', at), text.size()) + 1;
     }
     if (line == "$Elements") element_sections.push_back(at);
+    if (line == "$Nodes") node_sections.push_back(at);
+    if (line == "$Entities") entity_sections.push_back(at);
     if (line == "$ELM") msh1 = true;
   }
-  if (element_sections.empty() && !msh1) return;
+  if (element_sections.empty() && node_sections.empty() && entity_sections.empty() && !msh1) return;
   const bool msh2 = starts_with(version, "2.") || version == "2", msh41 = version == "4.1";
   if (msh1 || !(msh2 || msh41))
     throw Error(path + ": MSH version " + (msh1 ? std::string("1") : "'" + version.substr(0, 20) + "'") +
@@ -213,15 +365,29 @@ void check_gmsh_elements(const std::string& path, const std::function<GmshElemen
     if (one.binary<std::int32_t>("the byte order mark") != 1)
       throw Error(path + ": a binary .msh file of another byte order is not read (save it as ASCII)");
   }
+  if (node_sections.size() > 1) throw Error(path + ": the file has " + std::to_string(node_sections.size()) + " $Nodes sections");
+  if (msh41)
+    for (std::size_t at : entity_sections) {
+      Cursor in(text, at, path, "$Entities");
+      check_msh41_entities(in, binary, path);
+    }
+  NodeTags nodes;
+  if (msh41 && !node_sections.empty()) {
+    Cursor in(text, node_sections[0], path, "$Nodes");
+    nodes = check_msh41_nodes(in, binary, path);
+  } else if (msh2 && !binary && !node_sections.empty()) {
+    Cursor in(text, node_sections[0], path, "$Nodes");
+    check_msh2_nodes(in, path);
+  }
   Entities entities(path, element_type);
   for (std::size_t at : element_sections) {
     Cursor in(text, at, path);
     if (msh41)
-      check_msh41(in, entities, binary, path);
+      check_msh41(in, entities, binary, path, nodes);
     else if (binary)
       check_msh2_binary(in, entities, path);
     else
-      check_msh2_ascii(in, entities);
+      check_msh2_ascii(in, entities, path);
   }
 }
 
