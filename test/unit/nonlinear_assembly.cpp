@@ -279,8 +279,9 @@ TEST_CASE("element forces: the projected tangent is positive semi-definite and e
   CHECK((exact.r - projected.r).norm() == 0.0);  // the forces are the same: only the tangent is changed
 }
 
-TEST_CASE("element forces: an inverted point refuses the step unless it carries a negligible volume", "[nonlinear]") {
-  // Two points of one plain tet's gradients: the second inverted (F = diag(-1, 1, 1)).
+TEST_CASE("element forces: an inverted point refuses the step unless it is next to a front (negligible volume)",
+          "[nonlinear]") {
+  // Two points of one plain tet's gradients: the second inverted (F = diag(0, 1, 1)).
   const xfem::EnrichedMesh em = xfem_test::plain(xfem::box_mesh({1, 1, 1}, {0, 0, 0}, {1, 1, 1}));
   xfem::ElementPoints one;
   xfem::element_points(em, xfem::CutElementSplits(), 0, 3, nullptr, one);
@@ -297,13 +298,22 @@ TEST_CASE("element forces: an inverted point refuses the step unless it carries 
   }
   xfem::ElementForces out;
   const xfem::MaterialLaw m = law(xfem::MaterialModel::NeoHookean);
+  // 1e-3 of the tet's volume carries weight: the step is refused.
   two.weight = Eigen::Vector2d(volume, 1e-3 * volume);
   CHECK_FALSE(xfem::element_forces(two, m, ue, true, out));
-  two.weight = Eigen::Vector2d(volume, 1e-12 * volume);
+  // Below next_to_front_weight: evaluated with the law continued below next_to_front_J.
+  const double w = 1e-6 * volume;
+  two.weight = Eigen::Vector2d(volume, w);
   REQUIRE(xfem::element_forces(two, m, ue, true, out));
+  CHECK(out.continued == 1);
   xfem::ElementForces alone;
   REQUIRE(xfem::element_forces(one, m, ue, true, alone));
-  CHECK(out.energy == alone.energy);  // the negligible inverted point is left out
+  xfem::StressAt s;
+  REQUIRE(xfem::stress_at(m, Eigen::Vector3d(0.0, 1.0, 1.0).asDiagonal(), s, xfem::next_to_front_J));
+  CHECK(out.energy == Approx(alone.energy + w * s.energy).epsilon(1e-12));
+  CHECK(out.r.allFinite());
+  CHECK(out.k.allFinite());
+  CHECK(out.min_J == Approx(0.0).margin(1e-12));
   // The linear model never refuses.
   two.weight = Eigen::Vector2d(volume, 1e-3 * volume);
   CHECK(xfem::element_forces(two, law(xfem::MaterialModel::Linear), ue, true, out));

@@ -42,8 +42,12 @@ struct LoadStep {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
   double final_residual = 0.0;             ///< relative residual at the accepted u
-  double factor_seconds = 0.0, assemble_seconds = 0.0;
-  int projected = 0;  ///< iterations that needed the projected tangent (element_forces.h)
+  /// Wall time: forces and tangents (assemble), numeric factorizations with the Dirichlet
+  /// elimination before them (factor), triangular solves (solve).
+  double factor_seconds = 0.0, assemble_seconds = 0.0, solve_seconds = 0.0;
+  int tangents = 0;        ///< tangent assemblies (each with its forces)
+  int factorizations = 0;  ///< numeric factorizations, failed ones included
+  int projected = 0;       ///< iterations that needed the projected tangent (element_forces.h)
   std::string failure;  ///< why it did not converge (empty when it did)
 };
 
