@@ -68,8 +68,10 @@ struct NewtonResult {
 ///    the remaining change of the Dirichlet values) with CHOLMOD, one symbolic analysis for every
 ///    factorization of the solve;
 ///  - the line search halves the step (up to 10 times) while a point of a nonlinear model would
-///    invert (det F <= 0) or the residual would grow (an iteration that moves the Dirichlet
-///    values is taken if it inverts nothing);
+///    invert (det F <= 0; the points next to a crack front never refuse: element_forces.h) or the
+///    residual would grow (an iteration that moves the Dirichlet values is taken if it inverts
+///    nothing); its full step evaluates forces and tangent together, which the next iteration
+///    (or the next load step) reuses: one tangent per accepted iterate;
 ///  - a load step whose Newton iterations fail (no convergence in max_iterations, a line search
 ///    that finds no step, a tangent that is not positive definite) is tried again as two halves,
 ///    at most max_halvings times.
