@@ -59,6 +59,12 @@ for s in r['steps']:
     print(f"newton: {r['material_model']}, load {s['load']}: residuals " + ' '.join(f'{x:.1e}' for x in h))
     assert s['converged'] and h[-1] <= 1e-8
     assert any(h[k] < 1e-2 and h[k + 1] < 10 * h[k] ** 2 for k in range(1, len(h) - 1)), h
+    # Forces and tangent once per accepted iterate: the first step evaluates its start too, the
+    # second starts from the first's answer (no projections, no halving here).
+    first = s is r['steps'][0]
+    assert s['tangents'] == s['iterations'] + (1 if first else 0), (s['tangents'], s['iterations'])
+    assert s['factorizations'] == s['iterations'] and s['projected_tangents'] == 0
+    assert min(s['assemble_seconds'], s['factor_seconds'], s['solve_seconds']) >= 0
 assert r['min_det_F'] > 0 and r['factorizations'] >= 2
 PY
 done

@@ -248,6 +248,64 @@ TEST_CASE("material law: neo-Hookean rejects J <= 0", "[material]") {
   CHECK(s.P.allFinite());
 }
 
+TEST_CASE("material law: neo-Hookean continued below Jc is the law above it, C2 at Jc, and its own derivatives below",
+          "[material]") {
+  // The law the points next to a crack front use (element_forces.h): h(J) = -mu ln J +
+  // lambda/2 (ln J)^2 replaced below Jc by its Taylor polynomial of degree 2.
+  const double Jc = 0.1;
+  const MaterialLaw law = law_of(MaterialModel::NeoHookean);
+  auto continued = [&](const Eigen::Matrix3d& F) {
+    StressAt s;
+    REQUIRE(xfem::stress_at(law, F, s, Jc));
+    return s;
+  };
+  std::mt19937 rng(7);
+  // Above Jc: the law itself, bit for bit.
+  for (const Eigen::Vector3d& sigma : {Eigen::Vector3d(1.2, 0.9, 0.8), Eigen::Vector3d(0.5, 0.5, 0.5)}) {
+    const Eigen::Matrix3d F = deformation(rng, sigma);
+    const StressAt a = evaluate(MaterialModel::NeoHookean, F), b = continued(F);
+    CHECK(a.energy == b.energy);
+    CHECK(a.P == b.P);
+    CHECK(a.A == b.A);
+  }
+  // At Jc: energy, P and A continuous (F = s Q1 Q2 with s^3 = Jc (1 -+ 1e-9)).
+  const Eigen::Matrix3d Q = random_rotation(rng) * random_rotation(rng);
+  const Eigen::Matrix3d F_above = std::cbrt(Jc * (1 + 1e-9)) * Q, F_below = std::cbrt(Jc * (1 - 1e-9)) * Q;
+  const StressAt above = continued(F_above), below = continued(F_below);
+  CHECK(std::abs(above.energy - below.energy) <= 1e-7 * std::abs(above.energy));
+  CHECK((above.P - below.P).norm() <= 1e-7 * above.P.norm());
+  CHECK((above.A - below.A).norm() <= 1e-6 * above.A.norm());
+  // Below Jc, also at J <= 0: P and A are the derivatives of the energy; the energy grows as J falls.
+  for (const Eigen::Vector3d& sigma :
+       {Eigen::Vector3d(0.5, 0.3, 0.2), Eigen::Vector3d(2.0, 1.0, 0.01), Eigen::Vector3d(1.0, 1.0, 0.0),
+        Eigen::Vector3d(1.5, 1.0, -0.4), Eigen::Vector3d(3.0, 2.0, -1.0)}) {
+    const Eigen::Matrix3d F = deformation(rng, sigma);
+    const StressAt s = continued(F);
+    Eigen::Matrix3d P;
+    Mat9 A;
+    const double h = 1e-6;
+    for (int k = 0; k < 3; ++k)
+      for (int L = 0; L < 3; ++L) {
+        const StressAt plus = continued(F + h * unit_matrix(k, L)), minus = continued(F - h * unit_matrix(k, L));
+        P(k, L) = (plus.energy - minus.energy) / (2 * h);
+        const Eigen::Matrix3d dP = (plus.P - minus.P) / (2 * h);
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) A(3 * i + j, 3 * k + L) = dP(i, j);
+      }
+    CHECK((s.P - P).norm() <= 1e-6 * s.P.norm());
+    CHECK((s.A - A).norm() <= 1e-6 * s.A.norm());
+    CHECK((s.A - s.A.transpose()).norm() <= 1e-12 * s.A.norm());
+    CHECK(s.energy > 0);
+  }
+  // Along F = diag(1, 1, J): the energy rises monotonically as J falls through Jc, 0 and below.
+  double previous = continued(Eigen::Vector3d(1, 1, 0.16).asDiagonal()).energy;
+  for (double J = 0.08; J > -1.0; J -= 0.08) {
+    const double e = continued(Eigen::Vector3d(1, 1, J).asDiagonal()).energy;
+    CHECK(e > previous - 1e-9 * std::abs(previous));
+    previous = e;
+  }
+}
+
 TEST_CASE("material law: model names round-trip; an unknown name is an error listing the models", "[material]") {
   for (MaterialModel model : kModels) CHECK(xfem::material_model_named(xfem::material_model_name(model)) == model);
   CHECK(xfem::material_model_named("neo-hookean") == MaterialModel::NeoHookean);

@@ -19,7 +19,17 @@ struct ElementForces {
   Eigen::VectorXd r;
   Eigen::MatrixXd k;
   double min_J = 0.0;  ///< the smallest det F over the points
+  int continued = 0;   ///< points next to a crack front evaluated below next_to_front_J (neo-Hookean)
 };
+
+/// Next to a crack front the branch functions' gradients grow like r^-1/2, and some points of the
+/// front-singular rule always invert once the cut opens (docs/METHOD.md "Next to a crack front").
+/// A point carrying less than next_to_front_weight of its tet's integrated volume is "next to the
+/// front": it never refuses a step, and the neo-Hookean law is continued for it below
+/// det F = next_to_front_J (neo_hookean_stress), so that its energy and forces stay smooth
+/// functions of u (the corotational and linear laws are defined for every F as they are).
+constexpr double next_to_front_weight = 1e-4;
+constexpr double next_to_front_J = 0.1;
 
 /// How the tangent is formed: the exact dr/du, or with each point's A projected onto the positive
 /// semi-definite matrices (its negative eigenvalues set to 0: "projected Newton"), which keeps K
@@ -28,8 +38,8 @@ struct ElementForces {
 enum class Tangent { Exact, Projected };
 
 /// Evaluates the tet at `ue`; k only when `tangent`. Returns false, leaving `out` incomplete, when
-/// a point of a model other than "linear" has det F <= 0 (an inverted point: the solve rejects
-/// the step); the linear model never refuses.
+/// a point of a model other than "linear" that is not next to a front has det F <= 0 (an inverted
+/// point: the solve rejects the step); the linear model never refuses.
 bool element_forces(const ElementPoints& points, const MaterialLaw& law, const Eigen::VectorXd& ue, bool tangent,
                     ElementForces& out, Tangent kind = Tangent::Exact);
 

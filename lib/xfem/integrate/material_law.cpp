@@ -44,11 +44,11 @@ MaterialModel material_model_named(const std::string& name) {
   throw Error("unknown material model \"" + name + "\" (linear, corotational, neo-hookean)");
 }
 
-bool stress_at(const MaterialLaw& law, const Eigen::Matrix3d& F, StressAt& out) {
+bool stress_at(const MaterialLaw& law, const Eigen::Matrix3d& F, StressAt& out, double continued_below) {
   switch (law.model) {
     case MaterialModel::Linear: linear_stress(law.lame, F, out); return true;
     case MaterialModel::Corotational: corotational_stress(law.lame, F, out); return true;
-    case MaterialModel::NeoHookean: return neo_hookean_stress(law.lame, F, out);
+    case MaterialModel::NeoHookean: return neo_hookean_stress(law.lame, F, out, continued_below);
   }
   throw Error("stress_at: unknown material model");
 }

@@ -39,8 +39,10 @@ struct StressAt {
 
 /// Evaluates `law` at F (implementations: material_law.cpp for Linear, material_corotational.h,
 /// material_neo_hookean.h). For NeoHookean, J = det F <= 0 has no energy: returns false (the caller
-/// rejects the step) and leaves `out` unspecified; every other case returns true.
-bool stress_at(const MaterialLaw& law, const Eigen::Matrix3d& F, StressAt& out);
+/// rejects the step) and leaves `out` unspecified; every other case returns true. `continued_below`
+/// (NeoHookean only; 0: not used) continues the law below that J, for every F
+/// (neo_hookean_stress): what the points next to a crack front are evaluated with (element_forces.h).
+bool stress_at(const MaterialLaw& law, const Eigen::Matrix3d& F, StressAt& out, double continued_below = 0.0);
 
 /// The Cauchy stress sigma = P F^T / J of a point (Pa), for output; J <= 0 gives NaNs (callers
 /// check J first).

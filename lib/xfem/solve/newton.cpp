@@ -25,7 +25,29 @@ struct StepContext {
   std::unique_ptr<CholeskyFactor>& factor;
   NewtonResult& result;
   double force_floor;  // the smallest force scale: mu L^2 1e-6 (a strain of 1e-6 across the body)
+  // The forces at `at_u` and, in K, the exact tangent there: computed together once per accepted
+  // iterate (the line search's full step evaluates both), reused by the next iteration and by the
+  // next load step, which starts where this one converged.
+  Eigen::VectorXd at_u = Eigen::VectorXd(), r_at_u = Eigen::VectorXd();
+  double energy_at_u = 0.0;
+  bool evaluated = false;
 };
+
+// Forces and exact tangent at u into c.r_at_u, c.K (unless they are there already); false when a
+// point is inverted.
+bool evaluate_at(StepContext& c, const Eigen::VectorXd& u, LoadStep& step) {
+  if (c.evaluated && c.at_u.size() == u.size() && c.at_u == u) return true;
+  c.evaluated = false;
+  const auto clock = std::chrono::steady_clock::now();
+  const bool valid =
+      internal_forces(*c.problem.em, *c.problem.body, c.problem.law, u, c.energy_at_u, c.r_at_u, &c.K);
+  step.assemble_seconds += seconds_since(clock);
+  ++step.tangents;
+  if (!valid) return false;
+  c.at_u = u;
+  c.evaluated = true;
+  return true;
+}
 
 double norm_on(const Eigen::VectorXd& v, const std::vector<char>& is_fixed, bool fixed_ones) {
   double s = 0.0;
@@ -43,14 +65,12 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
   if (fixed != c.fixed) throw Error("the Dirichlet conditions fix other DOFs at load factor " + cli::three_digits(s));
   const Eigen::VectorXd fs = s * c.problem.f;
   Eigen::VectorXd r, r_trial, R;
-  double energy = 0.0;
   for (int it = 0; it <= c.options.max_iterations; ++it) {
-    auto clock = std::chrono::steady_clock::now();
-    if (!internal_forces(em, *c.problem.body, c.problem.law, u, energy, r, &c.K)) {
+    if (!evaluate_at(c, u, step)) {
       step.failure = "a point is inverted at the start of the step";
       return false;
     }
-    step.assemble_seconds += seconds_since(clock);
+    r = c.r_at_u;
     R = r - fs;
     const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), c.force_floor});
     const double residual = norm_on(R, c.is_fixed, false) / scale;
@@ -78,24 +98,33 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     // A tangent that is not positive definite (extreme strains next to a crack front, buckling) is
     // formed again with each point's tangent projected onto the positive semi-definite ones.
     ReducedSystem reduced;
-    clock = std::chrono::steady_clock::now();
     for (Tangent kind : {Tangent::Exact, Tangent::Projected}) {
       if (kind == Tangent::Projected) {
         double e_projected = 0.0;
+        c.evaluated = false;  // K is no longer the exact tangent
+        const auto clock = std::chrono::steady_clock::now();
         internal_forces(em, *c.problem.body, c.problem.law, u, e_projected, r, &c.K, nullptr, Tangent::Projected);
+        step.assemble_seconds += seconds_since(clock);
         ++step.projected;
+        ++step.tangents;
       }
+      const auto clock = std::chrono::steady_clock::now();
       const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
       reduced = eliminate_dirichlet(full, -R, fixed, change);
       try {
         if (!c.factor) {
           c.factor = std::make_unique<CholeskyFactor>(reduced.K, c.options.ordering == "amd" ? Ordering::Amd : Ordering::Metis);
           c.result.analyze_seconds = c.factor->analyze_seconds;
+          step.factor_seconds -= c.factor->analyze_seconds;  // reported on its own
         } else {
           c.factor->refactor(reduced.K);
         }
+        step.factor_seconds += seconds_since(clock);
+        ++step.factorizations;
         break;
       } catch (const NotPositiveDefinite&) {
+        step.factor_seconds += seconds_since(clock);
+        ++step.factorizations;
         if (kind == Tangent::Projected) {  // not even the projected tangent: halve the step
           step.failure = "the tangent stiffness is singular even projected (a rigid motion left free?)";
           return false;
@@ -103,9 +132,10 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
       }
     }
     ++c.result.factorizations;
-    step.factor_seconds += seconds_since(clock);
+    auto clock = std::chrono::steady_clock::now();
     const Eigen::VectorXd x = c.factor->solve(reduced.f);
     const Eigen::VectorXd du = expand_solution(reduced, x, fixed, change);
+    step.solve_seconds += seconds_since(clock);
     // Line search: halve while a point inverts or the residual grows.
     const double before = norm_on(R, c.is_fixed, false);
     double alpha = 1.0;
@@ -116,10 +146,17 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
       trial = u + alpha * du;
       if (k == 0)
         for (std::size_t j = 0; j < fixed.size(); ++j) trial[fixed[j]] = target[j];  // exactly, not u + (target - u)
-      double e_trial = 0.0;
-      clock = std::chrono::steady_clock::now();
-      const bool valid = internal_forces(em, *c.problem.body, c.problem.law, trial, e_trial, r_trial, nullptr);
-      step.assemble_seconds += seconds_since(clock);
+      // The full step is usually taken: evaluate the tangent with its forces, for the next iteration.
+      bool valid = false;
+      if (k == 0) {
+        valid = evaluate_at(c, trial, step);
+        if (valid) r_trial = c.r_at_u;
+      } else {
+        double e_trial = 0.0;
+        clock = std::chrono::steady_clock::now();
+        valid = internal_forces(em, *c.problem.body, c.problem.law, trial, e_trial, r_trial, nullptr);
+        step.assemble_seconds += seconds_since(clock);
+      }
       if (!valid) {
         ++inverted;
         continue;
@@ -169,7 +206,10 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
       done = s;
       if (options.info)
         options.info("load " + cli::three_digits(s) + ": " + std::to_string(attempt.iterations.size() - 1) +
-                     " Newton iterations, relative residual " + cli::three_digits(attempt.final_residual));
+                     " Newton iterations, relative residual " + cli::three_digits(attempt.final_residual) + "; " +
+                     std::to_string(attempt.tangents) + " tangents in " + cli::three_digits(attempt.assemble_seconds) +
+                     " s, " + std::to_string(attempt.factorizations) + " factorizations in " +
+                     cli::three_digits(attempt.factor_seconds) + " s");
       continue;
     }
     if (step < full_step / std::pow(2.0, options.max_halvings) * 1.5)

@@ -42,8 +42,12 @@ struct LoadStep {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
   double final_residual = 0.0;             ///< relative residual at the accepted u
-  double factor_seconds = 0.0, assemble_seconds = 0.0;
-  int projected = 0;  ///< iterations that needed the projected tangent (element_forces.h)
+  /// Wall time: forces and tangents (assemble), numeric factorizations with the Dirichlet
+  /// elimination before them (factor), triangular solves (solve).
+  double factor_seconds = 0.0, assemble_seconds = 0.0, solve_seconds = 0.0;
+  int tangents = 0;        ///< tangent assemblies (each with its forces)
+  int factorizations = 0;  ///< numeric factorizations, failed ones included
+  int projected = 0;       ///< iterations that needed the projected tangent (element_forces.h)
   std::string failure;  ///< why it did not converge (empty when it did)
 };
 
@@ -64,8 +68,10 @@ struct NewtonResult {
 ///    the remaining change of the Dirichlet values) with CHOLMOD, one symbolic analysis for every
 ///    factorization of the solve;
 ///  - the line search halves the step (up to 10 times) while a point of a nonlinear model would
-///    invert (det F <= 0) or the residual would grow (an iteration that moves the Dirichlet
-///    values is taken if it inverts nothing);
+///    invert (det F <= 0; the points next to a crack front never refuse: element_forces.h) or the
+///    residual would grow (an iteration that moves the Dirichlet values is taken if it inverts
+///    nothing); its full step evaluates forces and tangent together, which the next iteration
+///    (or the next load step) reuses: one tangent per accepted iterate;
 ///  - a load step whose Newton iterations fail (no convergence in max_iterations, a line search
 ///    that finds no step, a tangent that is not positive definite) is tried again as two halves,
 ///    at most max_halvings times.

@@ -32,8 +32,11 @@ Json steps_json(const std::vector<LoadStep>& steps) {
                    {"relative_residuals", residuals},
                    {"line_search_steps", lengths},
                    {"projected_tangents", s.projected},
+                   {"tangents", s.tangents},
+                   {"factorizations", s.factorizations},
                    {"assemble_seconds", s.assemble_seconds},
-                   {"factor_seconds", s.factor_seconds}});
+                   {"factor_seconds", s.factor_seconds},
+                   {"solve_seconds", s.solve_seconds}});
   }
   return out;
 }

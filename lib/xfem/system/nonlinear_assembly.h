@@ -29,8 +29,9 @@ BodyIntegration integrate_body(const EnrichedMesh& em, int order, const std::fun
 /// The body's internal forces at the displacement u (3N): energy = total strain energy (J),
 /// r = internal forces (3N, N), and with `K` non-null the tangent dr/du into *K (3N x 3N, lower
 /// triangle, K's pattern: pattern_matrix). Each tet has `law`, or body.materials->law(t) when the body
-/// has per-tet materials. Returns false when some point of a model other than
-/// "linear" is inverted (det F <= 0); `min_J` gets the smallest det F met.
+/// has per-tet materials. Returns false when some point of a model other than "linear" is inverted
+/// (det F <= 0) and is not next to a crack front (element_forces.h); `min_J` gets the smallest
+/// det F met, next to the fronts included.
 bool internal_forces(const EnrichedMesh& em, const BodyIntegration& body, const MaterialLaw& law,
                      const Eigen::VectorXd& u, double& energy, Eigen::VectorXd& r, SparseMatrix* K, double* min_J = nullptr,
                      Tangent kind = Tangent::Exact);
