@@ -70,7 +70,8 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
     p.dirichlet(1.0, fixed, values);
     require_constrained_pieces(em, problem, fixed);
   }
-  const BodyIntegration body = integrate_body(em, problem.order);
+  BodyIntegration body = integrate_body(em, problem.order);
+  body.materials = run.materials;
   p.body = &body;
   const double integrate_seconds = seconds_since(clock);
   cli::info(std::string("material ") + material_model_name(problem.model) + ", " + std::to_string(body.points) +

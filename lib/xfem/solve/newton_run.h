@@ -15,6 +15,8 @@ struct NewtonRun {
   std::string reactions_path;  ///< nodal reactions (.mtx); empty: not written
   std::string report_path;     ///< the JSON report; empty: not written
   std::string ordering = "metis";
+  /// Each tet's law (problem.json `materials`: tet_materials); null: problem.json's `material` for all.
+  const TetMaterials* materials = nullptr;
   double rtol = 1e-8;
   int max_iterations = 25;
 };
