@@ -103,7 +103,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
     j["materials"] = 1;
     CHECK(error_of(j) ==
           "problem.json: unknown key 'materials' (allowed here: description, material, integration, dirichlet, "
-          "neumann, body_force, load_steps)");
+          "neumann, body_force, load_steps, cut_loads, contact)");
   }
   SECTION("wrong type") {
     j["dirichlet"][0]["value"] = {0, "zero", 0};

@@ -10,6 +10,7 @@
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
 #include "xfem/core/parallel_for.h"
+#include "xfem/system/cut_loads.h"
 #include "xfem/system/pieces.h"
 #include "xfem/system/stiffness_pattern.h"
 #include "xfem/geometry/tet_shape.h"
@@ -203,6 +204,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
                            conforming ? problem.order : 0);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
+  add_cut_loads(em, problem, sys.f);  // the cuts' faces (cut_loads.h): enriched DOFs only
   dirichlet_data(em, problem, sys.fixed, sys.fixed_values);
   sys.pieces = find_pieces_held_by(em, sys.fixed);
   sys.coordinates = em.mesh.points;
