@@ -67,6 +67,7 @@ void run_sweep(const SweepOptions& o) {
   check_finite_times(times, t, o.cut_path);
   const Problem problem = read_problem(o.problem_path);
   require_linear_material(problem, "xfem-sweep solves linear systems only");
+  refuse_cut_loads_and_contact(problem, "xfem-sweep's steps leave the cut's faces free (each step's cut differs)");
   std::filesystem::create_directories(o.dir);
 
   double start = cli::now();

@@ -137,6 +137,9 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
         factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
       else
         factor->refactor(reduced.K);
+      if (factor->rcond < 1e-14)
+        cli::warn("contact: K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
+                  three_digits(factor->rcond) + "): lower the contact penalty");
       u = expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
       *residual = relative_residual(K, f, u, reduced);
       ++out.solves;
@@ -152,6 +155,7 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
   out.pressure.resize(Q);
   for (long q = 0; q < Q; ++q) {
     out.pressure[q] = std::max(0.0, lambda[q] - c.penalty[q] * g[q]);
+    out.force += c.weight[q] * out.pressure[q];
     if (active[static_cast<std::size_t>(q)]) {
       ++out.active;
       out.active_area += c.weight[q];
@@ -161,7 +165,8 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
   cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " points in contact (area " +
             three_digits(out.active_area) + " m^2), " + std::to_string(out.solves) + " solves, " +
             std::to_string(out.updates) + " multiplier updates; largest penetration " +
-            three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m)");
+            three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m), normal force " +
+            three_digits(out.force) + " N");
   report["contact"] = Json{{"points", Q},
                            {"active_points", out.active},
                            {"active_area", out.active_area},
@@ -170,6 +175,7 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
                            {"max_penetration", out.max_penetration},
                            {"tolerance", out.tolerance},
                            {"opened_volume", out.opened_volume},
+                           {"force", out.force},
                            {"max_pressure", Q > 0 ? out.pressure.maxCoeff() : 0.0}};
   if (outcome) *outcome = out;
   return u;

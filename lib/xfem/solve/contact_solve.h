@@ -24,6 +24,7 @@ struct ContactOutcome {
   double max_penetration = 0.0;    ///< largest -g over all points at the end, metres (0 if none)
   double tolerance = 0.0;          ///< the penetration tolerance used, metres
   double opened_volume = 0.0;      ///< sum over the points of w g: the volume between the faces, m^3
+  double force = 0.0;              ///< sum over the points of w p: the normal force the faces carry, N
   Eigen::VectorXd pressure;        ///< Q: contact pressure at each point, Pa (>= 0)
 };
 

@@ -198,6 +198,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   sys.nb = em.nb;
   sys.n = em.n;
   const bool conforming = problem.rule == Problem::Rule::Conforming;
+  check_cut_indices(problem, cut_count(em));  // before the long part: a cut load or contact on a cut the mesh lacks
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,

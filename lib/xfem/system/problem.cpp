@@ -447,6 +447,12 @@ void check_cut_indices(const Problem& problem, int cuts) {
                   std::to_string(problem.contact.cuts[i]) + ", but the mesh has " + range);
 }
 
+void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason) {
+  if (problem.cut_loads.empty() && !problem.contact.on) return;
+  throw Error(problem.file + ": " + reason + ": " + (problem.cut_loads.empty() ? "contact is" : problem.contact.on ? "cut_loads and contact are" : "cut_loads are") +
+              " solved by xfem-assemble and xfem-solve only");
+}
+
 void require_linear_material(const Problem& problem, const std::string& reason) {
   if (problem.model == MaterialModel::Linear) return;
   const std::string name = material_model_name(problem.model);

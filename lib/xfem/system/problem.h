@@ -79,7 +79,7 @@ struct CutLoad {
 struct ContactSettings {
   bool on = false;            ///< off by default
   std::vector<int> cuts;      ///< the cuts whose faces may touch; empty with `on`: every cut
-  double penalty = 1e3;       ///< kappa = penalty * E / h (h the cut tet's size), Pa/m
+  double penalty = 1e5;       ///< kappa = penalty * E / h (h the cut tet's longest edge), Pa/m
   /// Whether the faces of cut k may touch.
   bool applies_to(int k) const {
     if (!on) return false;
@@ -148,6 +148,11 @@ std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, con
 /// (use \"linear\"; xfem-newton solves \"neo-hookean\")". `reason` says why the tool is
 /// small-strain, e.g. "xfem-front's interaction integral is small-strain".
 void require_linear_material(const Problem& problem, const std::string& reason);
+
+/// Refuses cut_loads and contact where a tool would ignore them: throws xfem::Error "<file>: <reason>:
+/// cut_loads and contact are solved by xfem-assemble and xfem-solve only". `reason` says why, e.g.
+/// "xfem-newton's follower loads on the deformed faces are not implemented".
+void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);
