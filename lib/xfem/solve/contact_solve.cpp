@@ -103,6 +103,7 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
     const SparseMatrix pattern = contact_pattern(s.K, blocks);
     SparseMatrix K = pattern;
     std::unique_ptr<CholeskyFactor> factor;
+    int inner = 0;
     update_active();
     for (;;) {
       if (out.solves >= settings.max_solves)
@@ -144,8 +145,16 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
       *residual = relative_residual(K, f, u, reduced);
       ++out.solves;
       g = G * u;
-      if (update_active()) continue;  // the inner (semismooth Newton) iteration: A changed
+      const bool changed = update_active();
+      cli::detail("contact: solve " + std::to_string(out.solves) + ": " +
+                  std::to_string(std::count(active.begin(), active.end(), 1)) + " points active" +
+                  (changed ? " (changed)" : "") + ", largest violation " + three_digits(violation()) + " m");
       if (violation() <= out.tolerance) break;
+      // The inner (semismooth Newton) iteration while A changes; a few times at most: on a curved
+      // cut points near zero gap can flip in and out for ever, and the multiplier update then
+      // makes progress where the inner loop does not (an inexact Uzawa step).
+      if (changed && ++inner < 5) continue;
+      inner = 0;
       for (long q = 0; q < Q; ++q) lambda[q] = std::max(0.0, lambda[q] - c.penalty[q] * g[q]);  // Uzawa
       ++out.updates;
       update_active();
