@@ -5,13 +5,13 @@
 #include <string>
 
 #include "xfem/system/assembly.h"
+#include "xfem/system/contact_operator.h"
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/core/fingerprint.h"
 #include "xfem/system/linear_system.h"
 #include "xfem/system/problem.h"
-#include "xfem/enrich/enriched_mesh.h"
 #include "xfem/system/integration_cost.h"
 #include "xfem/system/solution_provenance.h"
 #include "xfem/system/reactions.h"
@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
       "Assemble K u = f for an enriched mesh: element stiffness of formula (5) with the enriched basis\n"
       "(closed form for plain tets; tets with enriched DOFs split exactly along the cut, Gauss rules\n"
       "collapsed onto the cut front where crack-tip functions live), loads on the\n"
-      "original DOFs, and the Dirichlet data of problem.json (docs/FORMATS.md). Writes the system/\n"
+      "original DOFs, loads on the cuts' faces on the enriched DOFs, and the Dirichlet data of problem.json\n"
+      "(docs/FORMATS.md); with \"contact\": the cuts' gap operator. Writes the system/\n"
       "directory xfem-solve reads (written atomically; system.json last): K.petsc, f.petsc, coordinates.petsc\n"
       "(PETSc's binary format, loaded in parallel by each rank), dirichlet.mtx, system.json; with --format mtx\n"
       "K.mtx, f.mtx, coordinates.mtx (Matrix Market text, e.g. for scipy.io.mmread) instead; and\n"
@@ -49,7 +50,8 @@ int main(int argc, char** argv) {
                                         "cut, as given to xfem-classify")
       ->allow_extra_args(false);
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, materials (one "
-                                               "per region of the mesh), integration, dirichlet, neumann, body_force)")->required();
+                                               "per region of the mesh), integration, dirichlet, neumann, body_force, "
+                                               "cut_loads, contact)")->required();
   app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
                                      "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
                                      "with m^3 > points, one centroid point each (default: problem.json's "
@@ -119,6 +121,9 @@ int main(int argc, char** argv) {
     // can check the solution against the mesh, cut and problem they are given.
     const xfem::Provenance provenance = xfem::solution_provenance(em, problem_path);
     const xfem::DirichletGroups groups = xfem::dirichlet_groups(em.mesh, problem);
+    // Contact between the cuts' faces: the gap operator xfem-solve iterates with (contact_operator.h).
+    const xfem::ContactOperator contact = problem.contact.on ? xfem::contact_operator(em, problem) : xfem::ContactOperator();
+    if (problem.contact.on) xfem::cli::info("contact: " + std::to_string(contact.points()) + " points on the cut faces");
     const std::string generator = std::string("xfem-assemble ") + xfem::version;
     // Written into the temporary directory with the system, before system.json and its manifest
     // (a kill cannot leave a system without them): which condition fixes which DOF (xfem-solve
@@ -127,6 +132,7 @@ int main(int argc, char** argv) {
                               format == "mtx" ? xfem::SystemFormat::MatrixMarket : xfem::SystemFormat::Petsc,
                               [&](const std::string& tmp) {
                                 xfem::write_dirichlet_groups(groups, tmp, generator);
+                                if (problem.contact.on) xfem::write_contact_operator(contact, tmp);
                                 xfem::write_json(xfem::Json{{"fingerprints", xfem::provenance_json(provenance)}},
                                                  (std::filesystem::path(tmp) / "provenance.json").string());
                               });

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     if (!run.report_path.empty()) xfem::cli::check_output(run.report_path, {".json"}, true);
     run.problem_path = problem_path;
     const xfem::Problem problem = xfem::read_problem(problem_path);
+    xfem::refuse_cut_loads_and_contact(problem, "xfem-newton has no follower load on the deformed faces and no contact");
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     // Each tet's law (problem.json `materials`, checked against the mesh's regions); none: one law.
     const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);

@@ -9,6 +9,7 @@
 #include "xfem/core/error.h"
 #include "xfem/core/version.h"
 #include "xfem/solve/backend_launch.h"
+#include "xfem/solve/contact_solve.h"
 #include "xfem/solve/direct_backend.h"
 #include "xfem/solve/enriched_dof_fixes.h"
 #include "xfem/solve/petsc_backend.h"
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
               enriched_block = "auto";
   double rtol = 1e-10, drop_tol = 0;
   int max_iterations = 10000, processes = 0;
+  xfem::ContactIteration contact;
   auto& app = tool->app;
   app.add_option("system", dir, "system directory written by xfem-assemble (system.json, K.petsc or K.mtx, ...)")
       ->required();
@@ -74,6 +76,10 @@ int main(int argc, char** argv) {
                  "fraction of the support; e.g. 1e-6; default 0: keep all, warn below 1e-8). Enriched DOFs whose row "
                  "of K is exactly zero are always fixed to 0, with a warning")
       ->check(xfem::cli::non_negative());
+  app.add_option("--contact-tol", contact.tolerance, "contact (a system assembled with \"contact\"): the largest "
+                 "penetration of the cut's faces accepted, m (default: 1e-8 max |u|)")->check(xfem::cli::positive());
+  app.add_option("--contact-iterations", contact.max_solves, "contact: factorizations at most (default 100)")
+      ->check(xfem::cli::range(2, 100000));
   xfem::cli::add_threads_option(*tool);
 #if XFEM_SOLVE_LINKS_PETSC
   // Outlives cli::run, so that rank 0 prints a failure before MPI is finalized: finalizing first
@@ -84,6 +90,11 @@ int main(int argc, char** argv) {
     using xfem::cli::three_digits;
     xfem::cli::check_output(output, {".mtx"}, true);
     if (!report_path.empty()) xfem::cli::check_output(report_path, {".json"}, true);
+    // Contact is iterated on CHOLMOD factorizations (contact_solve.h).
+    const bool with_contact = xfem::has_contact_operator(dir);
+    if (with_contact && backend == "petsc") throw xfem::Error(dir + ": contact between the cut's faces is solved by "
+                                                              "the cholmod backend only (give --backend cholmod)");
+    if (with_contact) backend = "cholmod";
     backend = xfem::launch_backend(dir, backend, processes, XFEM_SOLVE_LINKS_PETSC, argc, argv, output);
 #if XFEM_SOLVE_LINKS_PETSC
     if (backend == "petsc") mpi = std::make_unique<xfem::PetscSession>();
@@ -128,7 +139,10 @@ int main(int argc, char** argv) {
     report["backend"] = backend;
     Eigen::VectorXd u;
     double residual = 0;
-    if (backend == "cholmod") u = xfem::solve_with_cholmod(s, ordering, !tool->quiet, report, &residual);
+    if (with_contact)
+      u = xfem::solve_with_contact(s, xfem::read_contact_operator(dir, 3 * s.n), contact, ordering, !tool->quiet,
+                                   report, &residual);
+    else if (backend == "cholmod") u = xfem::solve_with_cholmod(s, ordering, !tool->quiet, report, &residual);
 #if XFEM_SOLVE_LINKS_PETSC
     else
       u = xfem::solve_with_petsc(std::move(distributed), s, {rtol, max_iterations, near_null, enriched_block, {}}, root,

@@ -103,7 +103,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
     j["materails"] = 1;  // "materials" is a key (several materials); a misspelling of it is not
     CHECK(error_of(j) ==
           "problem.json: unknown key 'materails' (allowed here: description, material, materials, integration, "
-          "dirichlet, neumann, body_force, load_steps)");
+          "dirichlet, neumann, body_force, load_steps, cut_loads, contact)");
   }
   SECTION("wrong type") {
     j["dirichlet"][0]["value"] = {0, "zero", 0};

@@ -256,7 +256,8 @@ void PennyField::evaluate(const Eigen::Vector3d& x, int side, Eigen::Vector3d* u
   const double Ur = ((1 - 2 * nu) * phi.r + z * chi.r) / (2 * mu);
   const double uz = (-2 * (1 - nu) * chi.f + z * chi.z) / (2 * mu);
   // The remote field sigma n n^T: eps = sigma / E ((1 + nu) n n^T - nu I), u = eps (x - centre).
-  const Eigen::Matrix3d eps = sigma / E * ((1 + nu) * n * n.transpose() - nu * Eigen::Matrix3d::Identity());
+  const Eigen::Matrix3d eps = remote ? Eigen::Matrix3d(sigma / E * ((1 + nu) * n * n.transpose() - nu * Eigen::Matrix3d::Identity()))
+                                     : Eigen::Matrix3d::Zero();
   if (u_out) *u_out = Ur * er + s * uz * n + eps * d;
   if (grad_out) {
     if (at_front) {
@@ -284,7 +285,7 @@ Eigen::Vector3d PennyField::displacement(const Eigen::Vector3d& x, int side) con
     if (std::abs(shear.dot(n)) > 1e-12 * shear.norm()) throw Error("penny field: shear must lie in the disc's plane");
     // The remote shear strain (tau n^T + n tau^T) (1 + nu) / E, then the slid crack's perturbation.
     const Eigen::Matrix3d eps = (1 + nu) / E * (shear * n.transpose() + n * shear.transpose());
-    u += eps * (x - centre) +
+    u += (remote ? Eigen::Vector3d(eps * (x - centre)) : Eigen::Vector3d::Zero()) +
          elliptical_jump_displacement(x, 16.0 * (1 - nu * nu) / (M_PI * (2 - nu) * E) * shear);
   }
   return u;

@@ -78,6 +78,10 @@ struct PennyField {
   double sigma = 0.0;                                 ///< remote tension normal to the disc, Pa
   Eigen::Vector3d shear = Eigen::Vector3d::Zero();    ///< remote shear traction on the disc's plane (in it), Pa
   double E = 1.0, nu = 0.3;                           ///< Young's modulus (Pa), Poisson's ratio
+  /// false: the crack loaded on its faces instead (pressure sigma, shear traction `shear` on the
+  /// face above, the opposite below; zero at infinity): the same field without the remote uniform
+  /// one, which has no jump, so the opening and K are the same (problem.json "cut_loads").
+  bool remote = true;
 
   /// Displacement at x (metres; rigid motion: none, u(centre) = 0). `side` (+1 / -1) picks the
   /// face for a point in the disc's plane inside the disc (|z| <= 1e-12 a); 0: the +1 face.

@@ -8,6 +8,7 @@
 
 #include "xfem/enrich/branch_functions.h"
 #include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/integrate/cut_face_quadrature.h"
 #include "xfem/geometry/cut_pieces.h"
 #include "xfem/core/mesh.h"
 #include "xfem/geometry/tet_shape.h"
@@ -39,26 +40,6 @@ void split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eige
   }
 }
 
-// Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
-// -1 if it misses the polygon.
-double length_in_polygon(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Polygon& poly,
-                         const Eigen::Vector3d& normal) {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& x : poly) centre += x;
-  centre /= static_cast<double>(poly.size());
-  double lo = 0.0, hi = 1.0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Eigen::Vector3d& a = poly[i];
-    Eigen::Vector3d m = normal.cross(poly[(i + 1) % poly.size()] - a);
-    if (m.dot(centre - a) < 0) m = -m;  // inward, in the polygon's plane
-    const double dp = m.dot(p - a), dq = m.dot(q - a);
-    if (dp < 0 && dq < 0) return -1.0;
-    if (dp < 0) lo = std::max(lo, dp / (dp - dq));
-    if (dq < 0) hi = std::min(hi, dp / (dp - dq));
-  }
-  return hi >= lo ? (hi - lo) * (q - p).norm() : -1.0;
-}
-
 // The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
 bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
                       double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
@@ -80,64 +61,6 @@ bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point
   p = ends[0];
   q = ends[1];
   return true;
-}
-
-// The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
-// into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
-// segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
-void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eigen::Vector3d& C, int depth,
-                   const std::vector<const FrontSegment*>& fronts, const std::vector<double>& nodes,
-                   const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x, std::vector<double>& w) {
-  const double area2 = (B - A).cross(C - A).norm();
-  if (!(area2 > 0.0)) return;
-  if (depth > 0) {
-    const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
-    const Eigen::Vector3d centre = (A + B + C) / 3;
-    bool near = false;
-    for (const FrontSegment* f : fronts) near = near || point_segment_distance(centre, f->p0, f->p1) < size;
-    if (near) {
-      const Eigen::Vector3d ab = (A + B) / 2, bc = (B + C) / 2, ca = (C + A) / 2;
-      triangle_rule(A, ab, ca, depth - 1, fronts, nodes, weights, x, w);
-      triangle_rule(ab, B, bc, depth - 1, fronts, nodes, weights, x, w);
-      triangle_rule(ca, bc, C, depth - 1, fronts, nodes, weights, x, w);
-      triangle_rule(ab, bc, ca, depth - 1, fronts, nodes, weights, x, w);
-      return;
-    }
-  }
-  for (std::size_t i1 = 0; i1 < nodes.size(); ++i1)
-    for (std::size_t i2 = 0; i2 < nodes.size(); ++i2) {
-      const double s = nodes[i1], t = nodes[i2];
-      x.push_back(A + s * (B - A) + s * t * (C - B));
-      w.push_back(weights[i1] * weights[i2] * area2 * s);
-    }
-}
-
-// Gauss points of the convex polygon, fanned from `apex` (a corner, or a point inside it) over its
-// edges, each triangle by triangle_rule with the collapse at the apex. Positions and weights (m^2).
-void polygon_rule(const Polygon& poly, const Eigen::Vector3d& apex, int depth, const std::vector<const FrontSegment*>& fronts,
-                  const std::vector<double>& nodes, const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x,
-                  std::vector<double>& w) {
-  x.clear();
-  w.clear();
-  for (std::size_t i = 0; i < poly.size(); ++i)
-    triangle_rule(apex, poly[i], poly[(i + 1) % poly.size()], depth, fronts, nodes, weights, x, w);
-}
-
-// Where the integrand is singular in the polygon: a front segment piercing its inside (that
-// point), else a corner on the front (the first found), else its first corner.
-Eigen::Vector3d fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, const std::vector<const FrontSegment*>& fronts,
-                         double tolerance) {
-  for (const FrontSegment* f : fronts) {
-    const double d0 = normal.dot(f->p0 - poly[0]), d1 = normal.dot(f->p1 - poly[0]);
-    if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance) || d0 == d1) continue;
-    if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) continue;  // lying in the plane
-    const Eigen::Vector3d p = f->p0 + d0 / (d0 - d1) * (f->p1 - f->p0);
-    if (length_in_polygon(p, p, poly, normal) >= 0) return p;
-  }
-  for (const Eigen::Vector3d& v : poly)
-    for (const FrontSegment* f : fronts)
-      if (point_segment_distance(v, f->p0, f->p1) <= tolerance) return v;
-  return poly[0];
 }
 
 // The integrals over face (A, B, C) (its points in increasing id order, `normal` its unit normal)
@@ -167,7 +90,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
       next.clear();
       for (const Polygon& part : parts) {
         split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
-        if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
+        if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
           next.push_back(above);
           next.push_back(below);
         } else {
@@ -192,7 +115,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
     next.clear();
     for (const Polygon& part : parts) {
       split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
-      if (above.size() >= 3 && below.size() >= 3 && length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
+      if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
         next.push_back(above);
         next.push_back(below);
       } else {
@@ -226,7 +149,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
         side[0] = side[1] = cut->side(centre);
       }
     }
-    polygon_rule(part, fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
+    polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
     for (std::size_t i = 0; i < x.size(); ++i) {
       const Eigen::Vector2d bc = JtJ.solve(J.transpose() * (x[i] - A));
       const Eigen::Vector3d N(1.0 - bc[0] - bc[1], bc[0], bc[1]);
@@ -348,7 +271,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
       }
       if (on_face) continue;
       const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
-      polygon_rule(poly, fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+      polygon_gauss_rule(poly, polygon_fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
       for (std::size_t i = 0; i < x.size(); ++i) {
         const TipCoordinates tc = front.coordinates(x[i]);
         const BranchValues below = branch_functions(tc, -1), above = branch_functions(tc, 1);

@@ -69,6 +69,7 @@ void run_sweep(const SweepOptions& o) {
   const Problem problem = read_problem(o.problem_path);
   require_linear_material(problem, "xfem-sweep solves linear systems only");
   tet_materials(problem, mesh, o.body_path);  // an unknown region is named with the body's file before any work
+  refuse_cut_loads_and_contact(problem, "xfem-sweep's steps leave the cut's faces free (each step's cut differs)");
   std::filesystem::create_directories(o.dir);
 
   double start = cli::now();

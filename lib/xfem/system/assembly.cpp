@@ -11,6 +11,7 @@
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
 #include "xfem/core/parallel_for.h"
+#include "xfem/system/cut_loads.h"
 #include "xfem/system/pieces.h"
 #include "xfem/system/stiffness_pattern.h"
 #include "xfem/geometry/tet_shape.h"
@@ -217,12 +218,14 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, con
   sys.nb = em.nb;
   sys.n = em.n;
   const bool conforming = problem.rule == Problem::Rule::Conforming;
+  check_cut_indices(problem, cut_count(em));  // before the long part: a cut load or contact on a cut the mesh lacks
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, materials, oversampling_quadrature(points, refine), &s, progress,
                            conforming ? problem.order : 0, problem.closed_form, problem.graded);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
+  add_cut_loads(em, problem, sys.f);  // the cuts' faces (cut_loads.h): enriched DOFs only
   dirichlet_data(em, problem, sys.fixed, sys.fixed_values);
   sys.pieces = find_pieces_held_by(em, sys.fixed);
   sys.coordinates = em.mesh.points;

@@ -118,7 +118,7 @@ namespace fs = std::filesystem;
 // replaced (it is someone's data, not an older system).
 bool is_system_file(const std::string& name) {
   for (const char* known : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "K.petsc", "f.petsc", "dirichlet_conditions.json", "provenance.json",
-                            "coordinates.petsc", "system.json"})
+                            "coordinates.petsc", "system.json", "contact_gap.mtx", "contact_points.mtx"})
     if (name == known) return true;
   return false;
 }

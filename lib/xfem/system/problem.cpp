@@ -160,7 +160,7 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     check_material(w, W.E, W.nu);
   } else if (n.has("penny")) {
     const Node w = n.at("penny");
-    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu"});
+    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu", "loading"});
     f.kind = ExactField::Kind::Penny;
     PennyField& P = f.penny;
     if (w.has("centre")) P.centre = w.at("centre").vector3();
@@ -172,6 +172,12 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
       P.shear = w.at("shear").vector3();
       if (std::abs(P.shear.dot(P.normal)) > 1e-9 * P.shear.norm())
         w.at("shear").fail("must lie in the disc's plane (perpendicular to normal)");
+    }
+    if (w.has("loading")) {  // "remote" tension (the default) or "faces": the same load on the disc's faces
+      const std::string loading = w.at("loading").string();
+      if (loading != "remote" && loading != "faces")
+        w.at("loading").fail("must be \"remote\" or \"faces\", got \"" + loading + "\"");
+      P.remote = loading == "remote";
     }
     if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
     P.E = w.has("E") ? w.at("E").number() : material->first;
@@ -208,11 +214,62 @@ PrescribedRotation parse_rotation(const Node& n) {
 
 std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
 
+// A cut index: a non-negative integer (below kMaxCuts; the mesh's own count is checked later).
+int cut_index(const Node& n) {
+  if (!n.j.is_number_integer() || n.j.get<long>() < 0 || n.j.get<long>() > 15)
+    n.fail("must be a cut index, an integer in 0..15, got " + n.j.dump());
+  return n.j.get<int>();
+}
+
+// "cut_loads": [{"cut": 0, "pressure": p, "traction": [tx, ty, tz]}, ...] (CutLoad).
+void parse_cut_loads(const Node& root, Problem& p) {
+  if (!root.has("cut_loads")) return;
+  const Node list = root.at("cut_loads");
+  for (std::size_t i = 0; i < list.array_size(); ++i) {
+    const Node c = list.at(i);
+    c.require_object({"cut", "pressure", "traction"});
+    if (!c.has("pressure") && !c.has("traction")) c.fail("needs a pressure or a traction (or both)");
+    CutLoad load;
+    load.cut = c.has("cut") ? cut_index(c.at("cut")) : 0;
+    if (c.has("pressure")) load.pressure = c.at("pressure").number();
+    if (c.has("traction")) load.traction = c.at("traction").vector3();
+    p.cut_loads.push_back(load);
+  }
+}
+
+// "contact": true | false | {"cuts": [0, 2], "penalty": 1e3} (ContactSettings).
+void parse_contact(const Node& root, Problem& p) {
+  if (!root.has("contact")) return;
+  const Node c = root.at("contact");
+  if (c.j.is_boolean()) {
+    p.contact.on = c.j.get<bool>();  // every cut
+    return;
+  }
+  if (!c.j.is_object()) c.fail("must be true, false or an object {\"cuts\": [...], \"penalty\": ...}");
+  c.require_object({"cuts", "penalty"});
+  if (c.has("penalty")) {
+    p.contact.penalty = c.at("penalty").number();
+    if (!(p.contact.penalty >= 1.0 && p.contact.penalty <= 1e8))
+      c.at("penalty").fail("must lie in 1..1e8 (kappa = penalty E / h), got " + c.at("penalty").j.dump());
+  }
+  p.contact.on = true;
+  if (!c.has("cuts")) return;
+  const Node cuts = c.at("cuts");
+  if (cuts.array_size() == 0) cuts.fail("must list at least one cut index (or give \"contact\": false)");
+  for (std::size_t i = 0; i < cuts.j.size(); ++i) {
+    const int k = cut_index(cuts.at(i));
+    for (int other : p.contact.cuts)
+      if (other == k) cuts.at(i).fail("names cut " + std::to_string(k) + " twice");
+    p.contact.cuts.push_back(k);
+  }
+}
+
 }  // namespace
 
 Problem parse_problem(const Json& j, const std::string& file) {
   const Node root{j, file, ""};
-  root.require_object({"description", "material", "materials", "integration", "dirichlet", "neumann", "body_force", "load_steps"});
+  root.require_object({"description", "material", "materials", "integration", "dirichlet", "neumann", "body_force",
+                       "load_steps", "cut_loads", "contact"});
   Problem p;
   p.file = file;
   if (root.has("description")) root.at("description").string();
@@ -344,6 +401,8 @@ Problem parse_problem(const Json& j, const std::string& file) {
     }
   }
   if (root.has("body_force")) p.body_force = root.at("body_force").vector3();
+  parse_cut_loads(root, p);
+  parse_contact(root, p);
   return p;
 }
 
@@ -410,6 +469,25 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
   }
   if (nodes.empty()) throw Error(what + " selects no node");
   return nodes;
+}
+
+void check_cut_indices(const Problem& problem, int cuts) {
+  const std::string range = std::to_string(cuts) + (cuts == 1 ? " cut" : " cuts") +
+                            (cuts > 0 ? " (indices 0.." + std::to_string(cuts - 1) + ")" : "");
+  for (std::size_t i = 0; i < problem.cut_loads.size(); ++i)
+    if (problem.cut_loads[i].cut >= cuts)
+      throw Error(problem.file + ": cut_loads[" + std::to_string(i) + "].cut is " +
+                  std::to_string(problem.cut_loads[i].cut) + ", but the mesh has " + range);
+  for (std::size_t i = 0; i < problem.contact.cuts.size(); ++i)
+    if (problem.contact.cuts[i] >= cuts)
+      throw Error(problem.file + ": contact.cuts[" + std::to_string(i) + "] is " +
+                  std::to_string(problem.contact.cuts[i]) + ", but the mesh has " + range);
+}
+
+void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason) {
+  if (problem.cut_loads.empty() && !problem.contact.on) return;
+  throw Error(problem.file + ": " + reason + ": " + (problem.cut_loads.empty() ? "contact is" : problem.contact.on ? "cut_loads and contact are" : "cut_loads are") +
+              " solved by xfem-assemble and xfem-solve only");
 }
 
 void require_linear_material(const Problem& problem, const std::string& reason) {

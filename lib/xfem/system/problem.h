@@ -74,6 +74,32 @@ struct RegionMaterial {
   MaterialModel model = MaterialModel::Linear;  ///< problem.json's material.model when not given
 };
 
+/// A load on the two faces of a cut (problem.json "cut_loads"; docs/METHOD.md "Loads on the cut's
+/// faces"): equal and opposite on the faces, so it acts through the jump [[u]] = u+ - u- only.
+/// The face above (H = +1) is pushed by pressure p n + traction, the face below by the opposite:
+/// its work is the integral over the cut of (p n + t) . [[u]], n the cut's unit normal.
+struct CutLoad {
+  int cut = 0;                                       ///< index of the cut (as given to xfem-classify)
+  double pressure = 0.0;                             ///< Pa; > 0 pushes the faces apart
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();  ///< Pa, on the face above; minus it below
+};
+
+/// Frictionless contact between a cut's faces (problem.json "contact"; docs/METHOD.md "Contact"):
+/// which cuts, and the penalty of the augmented Lagrangian.
+struct ContactSettings {
+  bool on = false;            ///< off by default
+  std::vector<int> cuts;      ///< the cuts whose faces may touch; empty with `on`: every cut
+  double penalty = 1e5;       ///< kappa = penalty * E / h (h the cut tet's longest edge), Pa/m
+  /// Whether the faces of cut k may touch.
+  bool applies_to(int k) const {
+    if (!on) return false;
+    if (cuts.empty()) return true;
+    for (int c : cuts)
+      if (c == k) return true;
+    return false;
+  }
+};
+
 /// A static linear-elastic problem: the contents of problem.json (docs/FORMATS.md).
 struct Problem {
   std::string file;     ///< where it was read from, for messages
@@ -107,7 +133,13 @@ struct Problem {
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
+  std::vector<CutLoad> cut_loads;  ///< loads on the cuts' faces (cut indices checked against the mesh later)
+  ContactSettings contact;         ///< contact between the cuts' faces (off by default)
 };
+
+/// Refuses a problem whose cut_loads or contact name a cut the mesh does not have: throws
+/// xfem::Error "<file>: cut_loads[1].cut is 2, but the mesh has 1 cut (indices 0..0)".
+void check_cut_indices(const Problem& problem, int cuts);
 
 /// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
 /// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
@@ -147,6 +179,11 @@ void require_linear_material(const Problem& problem, const std::string& reason);
 /// regions: 1 'liver', 2 'tumour')" for a region the mesh has neither as a tet's region nor as a
 /// name, or "... names region 2 again (by name)" when an id and a name are the same region.
 TetMaterials tet_materials(const Problem& problem, const TetMesh& mesh, const std::string& mesh_file);
+
+/// Refuses cut_loads and contact where a tool would ignore them: throws xfem::Error "<file>: <reason>:
+/// cut_loads and contact are solved by xfem-assemble and xfem-solve only". `reason` says why, e.g.
+/// "xfem-newton's follower loads on the deformed faces are not implemented".
+void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/integrate/cut_face_quadrature.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "xfem/enrich/side_codes.h"
+#include "xfem/geometry/cut_pieces.h"
+#include "xfem/integrate/conforming_quadrature.h"
+
+namespace xfem {
+namespace {
+
+const CutSurface* surface_of(const EnrichedMesh& em, int k) {
+  return em.cuts.empty() ? em.cut.get() : em.cuts[static_cast<std::size_t>(k)].cut.get();
+}
+const std::vector<int>& classes_of(const EnrichedMesh& em, int k) {
+  return em.cuts.empty() ? em.cut_class : em.cuts[static_cast<std::size_t>(k)].cut_class;
+}
+
+// Whether every vertex of `polygon` lies in the plane of one face of the tet p (within `tol`): a
+// cut running along a mesh face, which the tet on the face's other side clips the same way.
+bool lies_in_a_face(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
+  for (int skip = 0; skip < 4; ++skip) {
+    const Eigen::Vector3d& a = p[(skip + 1) % 4];
+    const Eigen::Vector3d n = (p[(skip + 2) % 4] - a).cross(p[(skip + 3) % 4] - a);
+    if (n.norm() == 0) continue;
+    const Eigen::Vector3d u = n.normalized();
+    bool all = true;
+    for (const Eigen::Vector3d& v : polygon) all = all && std::abs(u.dot(v - a)) <= tol;
+    if (all) return true;
+  }
+  return false;
+}
+
+// The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
+// into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
+// segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
+void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eigen::Vector3d& C, int depth,
+                   const std::vector<const FrontSegment*>& fronts, const std::vector<double>& nodes,
+                   const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x, std::vector<double>& w) {
+  const double area2 = (B - A).cross(C - A).norm();
+  if (!(area2 > 0.0)) return;
+  if (depth > 0) {
+    const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+    const Eigen::Vector3d centre = (A + B + C) / 3;
+    bool near = false;
+    for (const FrontSegment* f : fronts) near = near || point_segment_distance(centre, f->p0, f->p1) < size;
+    if (near) {
+      const Eigen::Vector3d ab = (A + B) / 2, bc = (B + C) / 2, ca = (C + A) / 2;
+      triangle_rule(A, ab, ca, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, B, bc, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ca, bc, C, depth - 1, fronts, nodes, weights, x, w);
+      triangle_rule(ab, bc, ca, depth - 1, fronts, nodes, weights, x, w);
+      return;
+    }
+  }
+  for (std::size_t i1 = 0; i1 < nodes.size(); ++i1)
+    for (std::size_t i2 = 0; i2 < nodes.size(); ++i2) {
+      const double s = nodes[i1], t = nodes[i2];
+      x.push_back(A + s * (B - A) + s * t * (C - B));
+      w.push_back(weights[i1] * weights[i2] * area2 * s);
+    }
+}
+
+}  // namespace
+
+// Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
+// -1 if it misses the polygon.
+double segment_length_in_polygon(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Polygon& poly,
+                                 const Eigen::Vector3d& normal) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& x : poly) centre += x;
+  centre /= static_cast<double>(poly.size());
+  double lo = 0.0, hi = 1.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector3d& a = poly[i];
+    Eigen::Vector3d m = normal.cross(poly[(i + 1) % poly.size()] - a);
+    if (m.dot(centre - a) < 0) m = -m;  // inward, in the polygon's plane
+    const double dp = m.dot(p - a), dq = m.dot(q - a);
+    if (dp < 0 && dq < 0) return -1.0;
+    if (dp < 0) lo = std::max(lo, dp / (dp - dq));
+    if (dq < 0) hi = std::min(hi, dp / (dp - dq));
+  }
+  return hi >= lo ? (hi - lo) * (q - p).norm() : -1.0;
+}
+
+// Gauss points of the convex polygon, fanned from `apex` (a corner, or a point inside it) over its
+// edges, each triangle by triangle_rule with the collapse at the apex. Positions and weights (m^2).
+void polygon_gauss_rule(const Polygon& poly, const Eigen::Vector3d& apex, int depth, const std::vector<const FrontSegment*>& fronts,
+                  const std::vector<double>& nodes, const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x,
+                  std::vector<double>& w) {
+  x.clear();
+  w.clear();
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    triangle_rule(apex, poly[i], poly[(i + 1) % poly.size()], depth, fronts, nodes, weights, x, w);
+}
+
+// Where the integrand is singular in the polygon: a front segment piercing its inside (that
+// point), else a corner on the front (the first found), else its first corner.
+Eigen::Vector3d polygon_fan_apex(const Polygon& poly, const Eigen::Vector3d& normal, const std::vector<const FrontSegment*>& fronts,
+                         double tolerance) {
+  for (const FrontSegment* f : fronts) {
+    const double d0 = normal.dot(f->p0 - poly[0]), d1 = normal.dot(f->p1 - poly[0]);
+    if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance) || d0 == d1) continue;
+    if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) continue;  // lying in the plane
+    const Eigen::Vector3d p = f->p0 + d0 / (d0 - d1) * (f->p1 - f->p0);
+    if (segment_length_in_polygon(p, p, poly, normal) >= 0) return p;
+  }
+  for (const Eigen::Vector3d& v : poly)
+    for (const FrontSegment* f : fronts)
+      if (point_segment_distance(v, f->p0, f->p1) <= tolerance) return v;
+  return poly[0];
+}
+
+
+void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out) {
+  const CutSurface* cut = surface_of(em, k);
+  if (!cut || classes_of(em, k)[static_cast<std::size_t>(t)] == 0 || em.plain(t)) return;
+  const CrackFront& front = em.cuts.empty() ? em.front : em.cuts[static_cast<std::size_t>(k)].front;
+  TetCorners p;
+  for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+  // As branch_gradient_integrals does (the same points): h, tolerance, the fronts near the tet.
+  double h = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) h = std::max(h, (p[a] - p[b]).norm());
+  const double tolerance = 1e-12 * h;
+  Eigen::Vector3d lo = p[0], hi = p[0];
+  for (const auto& x : p) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::vector<const FrontSegment*> fronts;
+  for (const FrontSegment& segment : front.segments())
+    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
+        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
+      fronts.push_back(&segment);
+  const int n = std::max(order, 2);
+  const int depth = std::max(0, order - 3);
+  std::vector<double> nodes, weights;
+  gauss_legendre_01(n, nodes, weights);
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> w;
+  const TriangleMesh& surface = cut->mesh();
+  for (int tri : cut->triangles_meeting(p)) {
+    const Polygon poly = clip_triangle(p, surface.points.row(surface.triangles(tri, 0)).transpose(),
+                                       surface.points.row(surface.triangles(tri, 1)).transpose(),
+                                       surface.points.row(surface.triangles(tri, 2)).transpose());
+    if (!(polygon_area(poly) > 1e-10 * h * h)) continue;
+    const double share = lies_in_a_face(p, poly, tolerance) ? 0.5 : 1.0;
+    const Eigen::Vector3d normal = cut->unit_normal(tri);
+    polygon_gauss_rule(poly, polygon_fan_apex(poly, normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (!(w[i] > 0)) continue;
+      CutFacePoint q;
+      q.tet = t;
+      q.cut = k;
+      q.triangle = tri;
+      q.x = x[i];
+      q.normal = normal;
+      q.weight = share * w[i];
+      out.push_back(q);
+    }
+  }
+}
+
+std::vector<CutFacePoint> cut_face_points(const EnrichedMesh& em, int k, int order) {
+  std::vector<CutFacePoint> out;
+  for (int t = 0; t < em.tets(); ++t) cut_face_points(em, t, k, order, out);
+  return out;
+}
+
+void basis_jump(const EnrichedMesh& em, int t, int k, const Eigen::Vector3d& x, Eigen::VectorXd& jump,
+                BasisAt& scratch) {
+  int above = 1, below = -1;
+  if (!em.cuts.empty()) {
+    // Side codes (side_codes.h): x's own side of every other cut, +1 / -1 of cut k.
+    const int K = static_cast<int>(em.cuts.size());
+    int sides[kMaxCuts];
+    for (int j = 0; j < K; ++j) sides[j] = j == k ? 1 : em.cuts[static_cast<std::size_t>(j)].cut->side(x);
+    above = pack_sides(sides, K);
+    sides[k] = -1;
+    below = pack_sides(sides, K);
+  }
+  enriched_basis(em, t, x, above, scratch);
+  jump = scratch.N;
+  enriched_basis(em, t, x, below, scratch);
+  jump -= scratch.N;
+}
+
+}  // namespace xfem

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Issue 33: a pressure on the faces of the penny-shaped crack of pipelines/verification (8^3 box,
+# radius enrichment, the default conforming rule). Sneddon's field of the pressurised crack is
+# imposed on the boundary (data/penny_pressure.json: the remote-tension field less its uniform
+# part). Checks: the superposition identity on the same mesh, u(pressure p on the faces) =
+# u(remote tension p) - u(uncracked, the uniform field), to round-off; hence the same absolute L2
+# and H1 errors as the remote-tension penny; the crack's volume (xfem-solve's contact report; the
+# crack opens, so contact never acts) at its measured value, below 16 (1 - nu^2) p a^3 / (3 E);
+# one-line errors for a cut index out of range, a pressure that is not a number, contact with
+# the PETSc backend, cut loads given to xfem-newton or xfem-sweep.
+set -u
+fail() { echo "FAIL: $*" >&2; exit 1; }
+rm -rf "$XFEM_SCRATCH" && mkdir -p "$XFEM_SCRATCH" || exit 1
+cd "$XFEM_SCRATCH" || exit 1
+B="$XFEM_BIN"
+D="$XFEM_SOURCE/pipelines/verification/data"
+"$B/xfem-mesh" -q box --cells 8 8 8 --hi 1 1 1 -o mesh.vtu || fail "mesh"
+"$B/xfem-mesh" -q cut-disc --center 0.5 0.5 0.47 --normal 0 0 1 --radius 0.3 --rings 16 -o cut.vtp || fail "cut"
+"$B/xfem-classify" -q mesh.vtu --cut cut.vtp --tip-radius 0.15 -o classified.vtu || fail "classify"
+"$B/xfem-enrich" -q classified.vtu -o enriched.vtu || fail "enrich"
+for c in penny penny_pressure; do
+  "$B/xfem-assemble" -q enriched.vtu --cut cut.vtp --problem "$D/$c.json" --format mtx -o $c/system || fail "assemble $c"
+  "$B/xfem-solve" -q $c/system -o $c/u.mtx --report $c/solve.json || fail "solve $c"
+  "$B/xfem-rmserror" -q enriched.vtu --cut cut.vtp --solution $c/u.mtx --exact "$D/${c}_exact.json" --samples 26 \
+    -o $c/error.json > /dev/null || fail "rmserror $c"
+done
+python3 - <<'PY' || fail "superposition"
+import json
+def vector(path):
+    rows = [l for l in open(path) if not l.startswith('%')]
+    return [float(x) for x in rows[1:]]
+remote, pressure = vector('penny/u.mtx'), vector('penny_pressure/u.mtx')
+xyz = vector('penny/system/coordinates.mtx')
+E, nu, sigma, centre = 1.0, 0.3, 1.0, (0.5, 0.5, 0.47)
+# The uncracked body under the remote tension: eps = sigma / E ((1 + nu) e_z e_z - nu I), u = eps (x - centre)
+strain = (-nu * sigma / E, -nu * sigma / E, sigma / E)
+np = len(xyz) // 3
+worst = max(abs(remote[d] - (strain[d % 3] * (xyz[d] - centre[d % 3]) if d < 3 * np else 0.0) - pressure[d])
+            for d in range(len(remote)))
+scale = max(abs(v) for v in pressure)
+print("superposition: max |u_remote - u_uniform - u_pressure| = %.3g m, max |u_pressure| = %.3g m" % (worst, scale))
+assert worst <= 1e-10 * scale
+a, b = (json.load(open(c + '/error.json')) for c in ('penny', 'penny_pressure'))
+for k in ('l2', 'h1', 'max'):
+    print("%s error: remote %.10g, pressure %.10g" % (k, a[k], b[k]))
+    assert abs(a[k] - b[k]) <= 1e-9 * a[k]
+c = json.load(open('penny_pressure/solve.json'))['contact']
+exact = 16 * (1 - nu**2) * sigma * 0.3**3 / (3 * E)
+print("crack volume %.5g m^3, Sneddon %.5g (%.1f %%); contact points %d, active %d" %
+      (c['opened_volume'], exact, 100 * (c['opened_volume'] / exact - 1), c['points'], c['active_points']))
+assert abs(c['opened_volume'] - 0.11416) < 0.005 * 0.11416 and c['opened_volume'] < exact
+assert c['active_points'] == 0 and c['solves'] == 1
+PY
+# Bad inputs: one line each, nothing written.
+bad() {  # $1: problem.json text, $2: the expected message (grep -E)
+  printf '%s\n' "$1" > bad.json
+  "$B/xfem-assemble" -q enriched.vtu --cut cut.vtp --problem bad.json -o bad/system 2> err && fail "accepted: $1"
+  [ "$(wc -l < err)" -eq 1 ] && grep -qE "^xfem-assemble: error: $2" err || fail "message: $(cat err)"
+  [ ! -e bad ] || fail "output left behind"
+}
+bad '{"material": {"E": 1, "nu": 0.3}, "cut_loads": [{"cut": 1, "pressure": 1}]}' \
+  "bad.json: cut_loads\[0\]\.cut is 1, but the mesh has 1 cut \(indices 0\.\.0\)"
+bad '{"material": {"E": 1, "nu": 0.3}, "cut_loads": [{"pressure": "high"}]}' "bad.json: cut_loads\[0\]\.pressure must be a number"
+bad '{"material": {"E": 1, "nu": 0.3}, "contact": {"cuts": [3]}}' "bad.json: contact\.cuts\[0\] is 3, but the mesh has 1 cut"
+"$B/xfem-solve" penny_pressure/system -o bad.mtx --backend petsc 2> err && fail "contact with PETSc accepted"
+grep -q "contact between the cut's faces is solved by the cholmod backend only" err || fail "message: $(cat err)"
+[ ! -e bad.mtx ] || fail "output left behind"
+# The tools that would ignore them refuse cut loads and contact in one line.
+"$B/xfem-newton" -q enriched.vtu --cut cut.vtp --problem "$D/penny_pressure.json" -o bad.mtx 2> err && fail "xfem-newton accepted cut loads"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-newton: error: .*penny_pressure.json: xfem-newton has no follower load .*: cut_loads and contact are solved by xfem-assemble and xfem-solve only" err \
+  || fail "message: $(cat err)"
+"$B/xfem-mesh" -q cut-sweep --path 0.2 0.1 1.2 0.2 0.9 1.2 --depth 0.5 --resolution 0.2 -o sweep.vtp || fail "cut-sweep"
+"$B/xfem-sweep" -q mesh.vtu --cut sweep.vtp --problem "$D/penny_pressure.json" --steps 2 -o frames 2> err && fail "xfem-sweep accepted cut loads"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-sweep: error: .*xfem-sweep's steps leave the cut's faces free" err || fail "message: $(cat err)"
+[ ! -e bad.mtx ] && [ ! -e frames ] || fail "output left behind"
+cd / && rm -rf "$XFEM_SCRATCH"
