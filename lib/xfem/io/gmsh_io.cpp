@@ -225,7 +225,10 @@ void read_physical_volumes(const GmshSession& session, const std::vector<std::si
   std::map<std::size_t, std::size_t> row;
   for (std::size_t t = 0; t < tet_tags.size(); ++t) row.emplace(tet_tags[t], t);
   std::vector<int> region(tet_tags.size(), 0);
-  for (const auto& [tag, name] : volumes) {
+  for (const auto& volume : volumes) {
+    // Named, not a structured binding: a lambda below captures the tag (C++17 cannot capture a binding).
+    const int tag = volume.first;
+    const std::string& name = volume.second;
     if (tag < 0) throw Error(path + ": physical volume " + std::to_string(tag) + " has a negative tag");
     if (!name.empty()) names[tag] = name;
     GmshArray<int> entities;
