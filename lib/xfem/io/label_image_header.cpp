@@ -246,6 +246,17 @@ LabelImageHeader nrrd_header(const std::string& path) {
     const bool skip = fields.count("byte skip") && fields["byte skip"] != "0";
     check_data_size(path, file, skip ? 0 : offset, expected, !skip);
   }
+  // VTK's reader takes a first axis of 9 or fewer samples for a vector's components, and reads
+  // the rows of a left-anterior-superior space upside down: refused rather than misread.
+  if (h.dims[0] <= 9)
+    throw Error(path + ": a NRRD image " + std::to_string(h.dims[0]) +
+                " voxels wide along its first axis is read by VTK as vector components: not supported (10 or more)");
+  if (fields.count("space")) {
+    const std::string space = lower(fields["space"]);
+    if (space == "left-anterior-superior" || space == "las" || space == "3d-left-handed")
+      throw Error(path + ": NRRD space '" + fields["space"] + "' is not supported (VTK's reader flips its rows)");
+    if (space.find("time") != std::string::npos) throw Error(path + ": NRRD space with time is not a 3D label map");
+  }
   // 3D Slicer's segmentation files name their labels: Segment<N>_LabelValue and Segment<N>_Name.
   for (const auto& [key, value] : keys) {
     if (!(key.rfind("Segment", 0) == 0 && ends_with(key, "_Name"))) continue;
