@@ -68,6 +68,10 @@ MeshCommand image_command(CLI::App& app) {
                   "how far boundary facets may stray from the labels' boundary, m (default: max(size/10, a quarter of "
                   "the smallest voxel spacing))")
       ->check(cli::positive());
+  cmd->add_option("--smooth", o->mesh.smooth,
+                  "smooth the label boundaries by weighted labels (a Gaussian of this width, m; e.g. the largest voxel "
+                  "spacing): the voxels' steps no longer show (default: none)")
+      ->check(cli::positive());
   cmd->add_option("--names", o->names, "label names: lines 'LABEL NAME' or ITK-SNAP's 'LABEL ... \"NAME\"' (default: "
                                        "the names in the image, e.g. 3D Slicer's Segment<N>_Name)");
   return {cmd, [o] {

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "xfem/core/error.h"
+#include "xfem/generate/image_smoothing.h"
 #include "xfem/generate/mesh_ordering.h"
 #include "xfem/io/vtk_io.h"
 
@@ -56,6 +57,7 @@ std::set<int> kept_labels(const LabelImage& image, const ImageMeshOptions& o, co
 void check_options(const ImageMeshOptions& o) {
   if (!(std::isfinite(o.size) && o.size > 0)) throw Error("mesh size must be positive and finite (got " + short_number(o.size) + ")");
   if (!(std::isfinite(o.scale) && o.scale > 0)) throw Error("--scale must be positive and finite (got " + short_number(o.scale) + ")");
+  if (!(std::isfinite(o.smooth) && o.smooth >= 0)) throw Error("--smooth must be positive and finite (got " + short_number(o.smooth) + ")");
   if (!(std::isfinite(o.facet_distance) && o.facet_distance >= 0))
     throw Error("--facet-distance must be positive and finite (got " + short_number(o.facet_distance) + ")");
 }
@@ -101,10 +103,24 @@ TetMesh image_mesh(const LabelImage& image, const ImageMeshOptions& o, const std
     const std::int32_t l = image.labels[i];
     voxels[i] = kept.count(l) ? l : 0;
   }
+  // Weighted labels when smoothing (CGAL's weights image: unsigned char, the image's sizes).
+  CGAL::Image_3 weights;
+  if (o.smooth > 0) {
+    const std::vector<std::uint8_t> w =
+        label_weights(std::vector<std::int32_t>(voxels, voxels + image.labels.size()), image.dims,
+                      {o.smooth / h[0], o.smooth / h[1], o.smooth / h[2]});
+    _image* raw_weights = _createImage(static_cast<std::size_t>(image.dims[0]), static_cast<std::size_t>(image.dims[1]),
+                                       static_cast<std::size_t>(image.dims[2]), 1, h[0], h[1], h[2], 1, WK_FIXED,
+                                       SGN_UNSIGNED);
+    if (!raw_weights) throw Error(name + ": cannot allocate the smoothing weights");
+    std::memcpy(raw_weights->data, w.data(), w.size());
+    weights = CGAL::Image_3(raw_weights);
+  }
   // Surface points located by bisection to 1e-6 of the image's diagonal (CGAL: 1e-3).
   CGAL::Random domain_random(0);
   const Domain domain = Domain::create_labeled_image_mesh_domain(cgal_image, params::relative_error_bound = 1e-6,
-                                                                 params::p_rng = &domain_random);
+                                                                 params::p_rng = &domain_random,
+                                                                 params::weights = weights);
   const double facet_distance = o.facet_distance > 0 ? o.facet_distance : default_facet_distance(image, o);
   const Criteria criteria(params::facet_angle = 25, params::facet_size = radius_per_edge * o.size,
                           params::facet_distance = facet_distance, params::cell_radius_edge_ratio = 3,

@@ -14,6 +14,7 @@ struct ImageMeshOptions {
   double facet_distance = 0;   ///< how far a boundary facet may stray from the labels' boundary; 0: the default
   double scale = 1;            ///< world metres per image unit (0.001 for a millimetre image)
   std::vector<int> labels;     ///< the labels to mesh; empty: every non-zero label
+  double smooth = 0;           ///< Gaussian width (m) of the label weights that smooth the boundaries; 0: none
 };
 
 /// The facet distance used when none is given: a tenth of the size, but not below a quarter of
@@ -33,7 +34,9 @@ double kept_voxel_volume(const LabelImage& image, const ImageMeshOptions& option
 /// tets positively oriented. Criteria as unstructured_mesh.h's (facet angle 25 degrees, radius
 /// bounds 0.72 size, radius-edge ratio 3, slivers exuded without time limit, no perturbation);
 /// every connected component of every label is seeded (CGAL's initialize_triangulation_from_
-/// labeled_image), so small inclusions are not missed. Deterministic: the same image and options
+/// labeled_image), so small inclusions are not missed. With `smooth` > 0 the boundaries are
+/// smoothed by weighted labels (image_smoothing.h, a Gaussian of `smooth` metres): the voxels'
+/// steps no longer show in the mesh. Deterministic: the same image and options
 /// give the same mesh. Points and tets in Hilbert order (mesh_ordering.h).
 /// Throws xfem::Error (naming `name`) for a size or scale that is not positive and finite, labels
 /// the image lacks, no voxel to mesh, or an empty result.
