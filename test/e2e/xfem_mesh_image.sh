@@ -42,6 +42,11 @@ grep -q 'Name="region"' body.vtu || { echo "FAIL: body.vtu has no region array";
 check 0 "image again" "$M" -q image phantom.nrrd --size 0.012 -o again.vtu
 cmp -s body.vtu again.vtu || { echo "FAIL: image is not deterministic"; fail=1; }
 [ ! -s err.txt ] || { echo "FAIL: -q printed"; cat err.txt; fail=1; }
+check 0 "phantom-image, rotated" "$M" -q phantom-image --spacing 0.004 0.003 0.005 --direction 0 1 0 -1 0 0 0 0 1 -o rotated.nrrd
+grep -q "space directions: (0,0.0040000000000000001,0) (-0.0030000000000000001,0,0) (0,0,0.0050000000000000001)" rotated.nrrd ||
+  { echo "FAIL: phantom-image --direction not in the header"; head -c 400 rotated.nrrd; fail=1; }
+check 1 "phantom-image, sheared" "$M" phantom-image --direction 1 0 0 1 1 0 0 0 1 -o sheared.nrrd
+grep -q "must be orthonormal" err.txt && [ ! -e sheared.nrrd ] || { echo "FAIL: sheared direction"; cat err.txt; fail=1; }
 check 0 "--labels 2" "$M" -q image phantom.nrrd --labels 2 --size 0.006 -o inclusion.vtu
 
 # The whole chain on the phantom's mesh: cut, classified, enriched, assembled, solved.

@@ -18,7 +18,7 @@ void check(const PhantomImageSpec& s) {
     if (!(std::isfinite(s.spacing[a]) && s.spacing[a] > 0))
       throw Error("phantom image: spacing " + short_number(s.spacing[a]) + " must be positive and finite");
   if (!s.origin.allFinite()) throw Error("phantom image: origin must be finite");
-  if (!s.direction.allFinite() || !(s.direction.transpose() * s.direction - Eigen::Matrix3d::Identity()).isZero(1e-9))
+  if (!s.direction.allFinite() || !(s.direction.transpose() * s.direction - Eigen::Matrix3d::Identity()).isZero(1e-6))
     throw Error("phantom image: the direction matrix must be orthonormal (a rotation or reflection; columns are the "
                 "world directions of the image's i, j, k axes)");
   if (!(s.inclusion_radius > 0 && std::isfinite(s.inclusion_radius)))

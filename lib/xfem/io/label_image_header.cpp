@@ -164,7 +164,7 @@ VoxelType nrrd_type(const std::string& t, const std::string& path) {
 }
 
 LabelImageHeader nrrd_header(const std::string& path) {
-  const std::string text = head_of(path, 1 << 16, false);
+  const std::string text = head_of(path, 1 << 20, false);
   if (text.compare(0, 4, "NRRD") != 0) throw Error(path + ": not a NRRD file (no NRRD magic)");
   std::map<std::string, std::string> fields, keys;
   std::size_t pos = text.find('\n');
@@ -272,7 +272,7 @@ LabelImageHeader nrrd_header(const std::string& path) {
 
 // ---- MetaImage ------------------------------------------------------------------------------
 LabelImageHeader metaimage_header(const std::string& path) {
-  const std::string text = head_of(path, 1 << 16, false);
+  const std::string text = head_of(path, 1 << 20, false);
   std::map<std::string, std::string> fields;
   std::size_t pos = 0, header_end = std::string::npos;
   while (pos < text.size()) {
@@ -442,7 +442,7 @@ std::string xml_attribute(const std::string& tag, const std::string& name) {
 }
 
 LabelImageHeader vti_header(const std::string& path) {
-  const std::string text = head_of(path, 1 << 16, false);
+  const std::string text = head_of(path, 1 << 20, false);
   const std::size_t p = text.find("<ImageData");
   if (p == std::string::npos) throw Error(path + ": not a VTK image (no <ImageData> element; truncated file?)");
   const std::size_t e = text.find('>', p);
