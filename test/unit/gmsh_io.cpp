@@ -12,6 +12,7 @@
 
 #include "xfem/core/boundary_groups.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/system/problem.h"
 #include "xfem/io/vtk_io.h"
 
@@ -406,4 +407,54 @@ TEST_CASE("gmsh: binary files are checked as the ASCII ones", "[gmsh]") {
   const std::string whole = msh41_binary(0, 0);
   write_text(b41, whole.substr(0, whole.find("$EndElements") - 40));
   CHECK_THROWS_WITH(xfem::read_tet_mesh(b41), Contains(b41 + ": the file ends inside its binary $Elements section"));
+}
+
+namespace {
+// Three tets in MSH 2.2: the first in physical volume 4 "liver", the second in 9 "tumour", the
+// third (elementary entity 3) in none; `elements` replaces the element section to vary that.
+std::string three_tets(const std::string& elements, bool names = true) {
+  return std::string("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n") +
+         (names ? "$PhysicalNames\n2\n3 4 \"liver\"\n3 9 \"tumour\"\n$EndPhysicalNames\n" : "") +
+         "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n6 2 2 2\n$EndNodes\n$Elements\n" +
+         elements + "$EndElements\n";
+}
+}  // namespace
+
+TEST_CASE("gmsh: physical volumes are the regions, with their names", "[gmsh][regions]") {
+  const std::string path = scratch("regions.msh");
+  write_text(path, three_tets("3\n1 4 2 4 1 1 2 3 4\n2 4 2 9 2 2 3 4 5\n3 4 2 0 3 2 3 5 6\n"));
+  const xfem::TetMesh m = xfem::read_tet_mesh(path);
+  REQUIRE(m.tets.rows() == 3);
+  // Each tet by its points, whatever order gmsh lists them in.
+  for (int t = 0; t < 3; ++t) {
+    const double x = m.points.row(m.tets(t, 0)).sum() + m.points.row(m.tets(t, 1)).sum() +
+                     m.points.row(m.tets(t, 2)).sum() + m.points.row(m.tets(t, 3)).sum();
+    const int expected = x == 3.0 ? 4 : x == 6.0 ? 9 : 0;  // coordinate sums 3, 6, 11
+    INFO("tet " << t << " coordinate sum " << x);
+    CHECK(xfem::tet_regions(m)[t] == expected);
+  }
+  CHECK(m.region_names == std::map<int, std::string>{{4, "liver"}, {9, "tumour"}});
+  // Through a .vtu, as xfem-classify and xfem-enrich pass it on.
+  const std::string vtu = scratch("regions.vtu");
+  xfem::write_tet_mesh(m, vtu);
+  const xfem::TetMesh back = xfem::read_tet_mesh(vtu);
+  CHECK(xfem::tet_regions(back) == xfem::tet_regions(m));
+  CHECK(back.region_names == m.region_names);
+
+  // The project's cube: one physical volume "body" (tag 1) holds every tet.
+  const xfem::TetMesh cube = xfem::read_tet_mesh(data + "cube41.msh");
+  CHECK(xfem::region_ids(cube) == std::vector<int>{1});
+  CHECK(cube.region_names == std::map<int, std::string>{{1, "body"}});
+}
+
+TEST_CASE("gmsh: a mesh without physical volumes has no regions; a tet in two is an error", "[gmsh][regions]") {
+  const std::string plain = scratch("plain.msh"), twice = scratch("twice.msh");
+  write_text(plain, three_tets("2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 2 2 3 4 5\n", false));
+  const xfem::TetMesh m = xfem::read_tet_mesh(plain);
+  CHECK(m.cell_data.count("region") == 0);
+  CHECK(xfem::region_ids(m) == std::vector<int>{0});
+  // Elementary entity 1 is listed in the physical volumes 4 and 9: its tets would have two materials.
+  write_text(twice, three_tets("2\n1 4 2 4 1 1 2 3 4\n2 4 2 9 1 2 3 4 5\n"));
+  CHECK_THROWS_WITH(xfem::read_tet_mesh(twice), Contains(twice + ": tetrahedron ") &&
+                                                    Contains(" is in the physical volumes 4 and 9 (one region per tet)"));
 }

@@ -34,6 +34,11 @@ struct TetMesh {
   DataArrays point_data;  ///< one tuple per point
   DataArrays cell_data;   ///< one tuple per tet
   DataArrays field_data;  ///< any length (e.g. the extended connectivity, the DOF counts)
+  /// Names of regions by id (may be empty, and may name regions no tet has). Each tet's region
+  /// is the Int32 cell array "region" (core/regions.h): a cell array, so every stage that keeps,
+  /// permutes or picks cell arrays carries it without code of its own. In a .vtu the names are the
+  /// field arrays region_ids and region_names (docs/FORMATS.md "Regions").
+  std::map<int, std::string> region_names;
 };
 
 /// A triangulated surface (a cut, or the boundary of a body to mesh).

@@ -119,6 +119,7 @@ TetMesh spatially_ordered(const TetMesh& mesh) {
   out.point_data = permuted(mesh.point_data, o.point_order, "point");
   out.cell_data = permuted(mesh.cell_data, o.tet_order, "cell");
   out.field_data = mesh.field_data;
+  out.region_names = mesh.region_names;  // the ids are the cell array "region", permuted above
   return out;
 }
 

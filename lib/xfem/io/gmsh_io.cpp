@@ -11,6 +11,7 @@
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/boundary_groups.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/io/gmsh_check.h"
 #include "xfem/io/vtk_io.h"
 
@@ -32,7 +33,7 @@ struct GmshApi {
   X(gmshFree) X(gmshInitialize) X(gmshFinalize) X(gmshOpen) X(gmshOptionSetNumber) X(gmshLoggerGetLastError) \
   X(gmshModelMeshGetNodes) X(gmshModelMeshGetElementProperties) X(gmshModelMeshGetElementsByType)           \
   X(gmshModelMeshGetElementTypes) X(gmshModelGetPhysicalGroups) X(gmshModelGetPhysicalName)                 \
-  X(gmshModelMeshGetNodesForPhysicalGroup)
+  X(gmshModelMeshGetNodesForPhysicalGroup) X(gmshModelGetEntitiesForPhysicalGroup)
 #define XFEM_GMSH_POINTER(f) decltype(&::f) f = nullptr;
   XFEM_GMSH_FUNCTIONS(XFEM_GMSH_POINTER)
 #undef XFEM_GMSH_POINTER
@@ -187,26 +188,74 @@ std::string element_name(const GmshSession& session, int type) {
   return take_string(name) + " (gmsh element type " + std::to_string(type) + ")";
 }
 
-// Node rows of every element of `type`, N nodes each.
+// The tags of the elements of `type` in the entity `entity` (-1: all entities), and their node
+// tags (N per element).
+struct ElementTags {
+  GmshArray<std::size_t> tags, nodes;
+};
+void element_tags(const GmshSession& session, int type, int entity, ElementTags& out) {
+  session.guard([&](int* e) {
+    session.api().gmshModelMeshGetElementsByType(type, &out.tags.data, &out.tags.size, &out.nodes.data,
+                                                 &out.nodes.size, entity, 0, 1, e);
+  }, "cannot read the elements");
+}
+
+// Node rows of every element of `type`, N nodes each; their gmsh tags into `tags` if given.
 template <std::size_t N>
 std::vector<std::array<int, N>> elements(const GmshSession& session, const Nodes& nodes, int type,
-                                         const std::string& path) {
-  GmshArray<std::size_t> tags, node_tags;
-  session.guard([&](int* e) {
-    session.api().gmshModelMeshGetElementsByType(type, &tags.data, &tags.size, &node_tags.data, &node_tags.size, -1, 0,
-                                                 1, e);
-  }, "cannot read the elements");
-  if (node_tags.size != N * tags.size) throw Error(path + ": gmsh returned elements with a wrong number of nodes");
-  std::vector<std::array<int, N>> out(tags.size);
-  for (std::size_t e = 0; e < tags.size; ++e)
-    for (std::size_t k = 0; k < N; ++k) out[e][k] = row_of(nodes, node_tags[N * e + k], path);
+                                         const std::string& path, std::vector<std::size_t>* tags = nullptr) {
+  ElementTags e;
+  element_tags(session, type, -1, e);
+  if (e.nodes.size != N * e.tags.size) throw Error(path + ": gmsh returned elements with a wrong number of nodes");
+  std::vector<std::array<int, N>> out(e.tags.size);
+  for (std::size_t i = 0; i < e.tags.size; ++i)
+    for (std::size_t k = 0; k < N; ++k) out[i][k] = row_of(nodes, e.nodes[N * i + k], path);
+  if (tags) tags->assign(e.tags.begin(), e.tags.end());
   return out;
+}
+
+// Each physical volume's tag becomes the region of its tets, its name the region's name (docs/
+// FORMATS.md "gmsh meshes"); tets in no physical volume are region 0. A tet in two physical
+// volumes has no single material: an error. The regions go into `mixed` as the cell array
+// "region" (body_of keeps it), the names into `names`; nothing when the file has no physical volume.
+void read_physical_volumes(const GmshSession& session, const std::vector<std::size_t>& tet_tags,
+                           const std::vector<std::pair<int, std::string>>& volumes, const std::string& path,
+                           MixedMesh& mixed, std::map<int, std::string>& names) {
+  if (volumes.empty()) return;
+  std::map<std::size_t, std::size_t> row;
+  for (std::size_t t = 0; t < tet_tags.size(); ++t) row.emplace(tet_tags[t], t);
+  std::vector<int> region(tet_tags.size(), 0);
+  for (const auto& [tag, name] : volumes) {
+    if (tag < 0) throw Error(path + ": physical volume " + std::to_string(tag) + " has a negative tag");
+    if (!name.empty()) names[tag] = name;
+    GmshArray<int> entities;
+    session.guard([&](int* e) {
+      session.api().gmshModelGetEntitiesForPhysicalGroup(3, tag, &entities.data, &entities.size, e);
+    }, "cannot read the entities of a physical volume");
+    for (int entity : entities) {
+      ElementTags e;
+      element_tags(session, gmsh_tetrahedron, entity, e);
+      for (std::size_t element : e.tags) {
+        const auto it = row.find(element);
+        if (it == row.end()) continue;
+        int& r = region[it->second];
+        if (r != 0 && r != tag)
+          throw Error(path + ": tetrahedron " + std::to_string(element) + " is in the physical volumes " +
+                      std::to_string(r) + " and " + std::to_string(tag) + " (one region per tet)");
+        r = tag;
+      }
+    }
+  }
+  DataArray array = make_array(DataArray::Type::Int32, 1, region.size());
+  array.values.assign(region.begin(), region.end());
+  mixed.cell_data[region_array_name] = std::move(array);
 }
 
 }  // namespace
 
 TetMesh read_gmsh_tet_mesh(const std::string& path, std::vector<std::string>* warnings) {
   MixedMesh mixed;
+  std::map<int, std::string> region_names;
   {
     GmshSession session(path);
     GmshArray<int> types;
@@ -217,20 +266,25 @@ TetMesh read_gmsh_tet_mesh(const std::string& path, std::vector<std::string>* wa
         throw Error(path + ": the mesh has " + element_name(session, type) +
                     " elements; only linear tetrahedra are read (mesh with Mesh.ElementOrder = 1 and no recombination)");
     Nodes nodes = read_nodes(session, path);
-    mixed.tets = elements<4>(session, nodes, gmsh_tetrahedron, path);
+    std::vector<std::size_t> tet_tags;
+    mixed.tets = elements<4>(session, nodes, gmsh_tetrahedron, path, &tet_tags);
     mixed.tet_cells.resize(mixed.tets.size());
     for (std::size_t t = 0; t < mixed.tets.size(); ++t) mixed.tet_cells[t] = static_cast<long>(t);
 
+    std::vector<std::pair<int, std::string>> volumes;  // physical volumes: tag, name
     GmshArray<int> groups;  // (dim, tag) pairs
     session.guard([&](int* e) { session.api().gmshModelGetPhysicalGroups(&groups.data, &groups.size, -1, e); },
                   "cannot read the physical groups");
     for (std::size_t g = 0; g + 1 < groups.size; g += 2) {
       const int dim = groups[g], tag = groups[g + 1];
-      if (dim > 2) continue;
       char* raw_name = nullptr;
       session.guard([&](int* e) { session.api().gmshModelGetPhysicalName(dim, tag, &raw_name, e); },
                     "cannot read the physical names");
       std::string name = take_string(raw_name);
+      if (dim == 3) {
+        volumes.emplace_back(tag, name);
+        continue;
+      }
       if (name.empty()) name = std::to_string(tag);
       GmshArray<std::size_t> member_tags;
       GmshArray<double> coords;
@@ -242,8 +296,10 @@ TetMesh read_gmsh_tet_mesh(const std::string& path, std::vector<std::string>* wa
       for (std::size_t t : member_tags) members.push_back(row_of(nodes, t, path));
     }
     mixed.points = std::move(nodes.points);
+    read_physical_volumes(session, tet_tags, volumes, path, mixed, region_names);
   }
   TetMesh mesh = body_of(mixed, path);
+  mesh.region_names = std::move(region_names);
   validate_tet_mesh(mesh, path, warnings);
   return mesh;
 }

@@ -44,6 +44,7 @@ TetMesh read_mixed_grid(vtkUnstructuredGrid* grid, const std::string& name, std:
   mixed.point_data = to_arrays(grid->GetPointData());
   mixed.cell_data = to_arrays(grid->GetCellData());
   mixed.field_data = to_arrays(grid->GetFieldData());
+  auto region_names = take_region_names(grid->GetFieldData(), mixed.field_data, name);
   const DataArray* group = triangle_groups(mixed.cell_data);
   const vtkIdType nc = grid->GetNumberOfCells(), np = grid->GetNumberOfPoints();
   for (vtkIdType i = 0; i < nc; ++i) {
@@ -69,6 +70,7 @@ TetMesh read_mixed_grid(vtkUnstructuredGrid* grid, const std::string& name, std:
   // The group's value is now a point set: its cell array would mean nothing on the tets.
   if (group) mixed.cell_data.erase(mixed.cell_data.count("group") ? "group" : "gmsh:physical");
   TetMesh mesh = body_of(mixed, name);
+  mesh.region_names = std::move(region_names);
   validate_tet_mesh(mesh, name, warnings);
   return mesh;
 }
@@ -103,6 +105,7 @@ TetMesh read_tet_mesh(const std::string& path, std::vector<std::string>* warning
     mesh.point_data = to_arrays(grid->GetPointData());
     mesh.cell_data = to_arrays(grid->GetCellData());
     mesh.field_data = to_arrays(grid->GetFieldData());
+    mesh.region_names = take_region_names(grid->GetFieldData(), mesh.field_data, name);
   }
   validate_tet_mesh(mesh, name, warnings);
   return mesh;

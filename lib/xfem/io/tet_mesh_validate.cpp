@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/io/vtk_io.h"
 
 namespace xfem {
@@ -20,6 +21,7 @@ int validate_tet_mesh(TetMesh& mesh, const std::string& name, std::vector<std::s
       if (mesh.tets(t, k) < 0 || mesh.tets(t, k) >= np)
         throw Error(name + ": tetrahedron " + std::to_string(t) + " uses point " +
                     std::to_string(mesh.tets(t, k)) + ", out of range [0, " + std::to_string(np) + ")");
+  validate_regions(mesh, name);
   // Zero volume is judged relative to the tet's own longest edge, so the test is scale-free.
   long degenerate = 0, inverted = 0, first_degenerate = -1, first_inverted = -1;
   for (Eigen::Index t = 0; t < nt; ++t) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // write_tet_mesh: a tetrahedral mesh as VTK XML .vtu.
+#include <vtkFieldData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -18,6 +19,7 @@ void write_tet_mesh(const TetMesh& mesh, const std::string& path, Compression co
   auto grid = Ptr<vtkUnstructuredGrid>::New();
   grid->SetPoints(to_vtk(mesh.points, name));
   grid->SetCells(VTK_TETRA, cell_array(mesh.tets));
+  add_region_names(grid->GetFieldData(), mesh.region_names, mesh.field_data, name);
   write_vtk_xml(Ptr<vtkXMLUnstructuredGridWriter>::New(), grid, mesh.point_data, mesh.cell_data, &mesh.field_data,
                 path, name, compression);
 }

@@ -11,6 +11,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <map>
 #include <mutex>
 #include <new>
 #include <stdexcept>
@@ -141,6 +142,16 @@ void copy_cell(int type, vtkIdType npts, const vtkIdType* ids, vtkIdType i, int 
     row[k] = static_cast<int>(ids[k]);
   }
 }
+
+/// The region names of a tet mesh's field data `in` (the parallel arrays region_ids and
+/// region_names, tet_mesh_regions.cpp); region_ids, already read into `field_data` as a numeric
+/// array, is removed from it. Empty when there are none. Throws xfem::Error "<name>: ..." for one
+/// array without the other, wrong types or lengths, an id out of range or named twice.
+std::map<int, std::string> take_region_names(vtkFieldData* in, DataArrays& field_data, const std::string& name);
+/// Adds `names` (if any) to `out` as region_ids (Int32) and region_names (strings). Throws when
+/// `field_data` (the mesh's other field arrays) also has a region_ids.
+void add_region_names(vtkFieldData* out, const std::map<int, std::string>& names, const DataArrays& field_data,
+                      const std::string& name);
 
 /// Refuses a legacy `.vtk` file whose sections VTK would misread (vtk_legacy_check.cpp).
 void check_legacy_sections(const std::string& path);
