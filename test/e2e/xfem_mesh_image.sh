@@ -38,7 +38,8 @@ head -c 9 phantom.nrrd | grep -q NRRD0004 || { echo "FAIL: phantom.nrrd is not N
 check 0 "image" "$M" image phantom.nrrd --size 0.012 -o body.vtu
 grep -q "region 1 (body): " err.txt && grep -q "region 2 (inclusion): " err.txt ||
   { echo "FAIL: image does not report both regions"; cat err.txt; fail=1; }
-grep -q 'Name="region"' body.vtu || { echo "FAIL: body.vtu has no region array"; fail=1; }
+grep -q 'Name="region"' body.vtu && grep -q 'Name="region_names"' body.vtu && grep -q 'Name="region_ids"' body.vtu ||
+  { echo "FAIL: body.vtu has no region array or names"; fail=1; }
 check 0 "image again" "$M" -q image phantom.nrrd --size 0.012 -o again.vtu
 cmp -s body.vtu again.vtu || { echo "FAIL: image is not deterministic"; fail=1; }
 [ ! -s err.txt ] || { echo "FAIL: -q printed"; cat err.txt; fail=1; }

@@ -141,6 +141,8 @@ TEST_CASE("--labels keeps the named labels; unknown labels are refused", "[image
   const auto v = region_volumes(m);
   REQUIRE(v.size() == 1);
   CHECK(v.count(2));
+  o.labels = {-1};
+  CHECK_THROWS_WITH(xfem::image_mesh(im, o, "balls"), "balls: label -1: regions are numbered from 1");
   o.labels = {7};
   CHECK_THROWS_WITH(xfem::image_mesh(im, o, "balls"), "balls: label 7 is not in the image (its labels: 1, 2)");
   CHECK_THROWS_WITH(xfem::kept_voxel_volume(im, o, "balls"), "balls: label 7 is not in the image (its labels: 1, 2)");
@@ -166,6 +168,7 @@ TEST_CASE("a phantom with anisotropic spacing, an origin and a rotation or refle
     o.size = 0.008;
     const xfem::TetMesh m = xfem::image_mesh(im, o, "phantom");
     xfem_test::total_volume(m);
+    CHECK(m.region_names == std::map<int, std::string>{{1, "body"}, {2, "inclusion"}});  // from the NRRD header
     const Eigen::Vector3d body = xfem::phantom_body_centre(spec);
     const Eigen::Vector3d expected = spec.origin + direction * (body + spec.inclusion_centre);
     const double voxel = spec.spacing.maxCoeff();

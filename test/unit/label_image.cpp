@@ -247,6 +247,23 @@ TEST_CASE("hostile label maps are refused with one line naming the file", "[labe
     refused(path, "cannot read label map");
   }
   {
+    // A few bytes of "gzip" claiming 4e8 voxels: refused before the reader inflates or allocates.
+    const std::string path = scratch("bomb.nrrd");
+    write_text(path, "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1000 1000 400\nencoding: gzip\n\nxxxxxxxx");
+    refused(path, "bytes of compressed data cannot hold the header's 4e+08 bytes of voxels");
+  }
+  {
+    const std::string path = scratch("bomb.mha");
+    write_text(path, "NDims = 3\nDimSize = 1000 1000 400\nElementType = MET_UCHAR\nCompressedData = True\n"
+                     "ElementDataFile = LOCAL\nxxxxxxxx");
+    refused(path, "cannot hold");
+  }
+  {
+    const std::string path = scratch("skip.nrrd");
+    write_text(path, "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 10 3 2\nencoding: raw\nbyte skip: -1\n\n" + std::string(60, '\1'));
+    refused(path, "byte skip");
+  }
+  {
     const std::string path = scratch("empty.nii");
     write_text(path, std::string(100, '\0'));
     refused(path, "NIfTI header is truncated");
@@ -275,6 +292,8 @@ TEST_CASE("hostile label maps are refused with one line naming the file", "[labe
     const std::string path = scratch("huge.vti");
     write_text(path, "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 99999 0 99999 0 99999\" Spacing=\"1 1 1\">");
     refused(path, "exceeds the limit");
+    write_text(path, "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 999 0 999 0 99\" Spacing=\"1 1 1\">");
+    refused(path, "cannot hold");
   }
   {
     const std::string path = scratch("image.png");

@@ -8,6 +8,7 @@
 
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/generate/generation_limits.h"
 #include "xfem/generate/image_mesh.h"
 #include "xfem/generate/phantom_image.h"
@@ -32,10 +33,10 @@ struct PhantomOptions {
 
 // One line per region: its label, name, tets and volume, and the image's voxel volume beside it.
 void report_regions(const TetMesh& mesh, const LabelImage& image, double scale) {
-  const DataArray& region = mesh.cell_data.at("region");
+  const std::vector<int> region = tet_regions(mesh);
   std::map<int, std::pair<long, double>> tets;
   for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    auto& r = tets[static_cast<int>(region(static_cast<std::size_t>(t)))];
+    auto& r = tets[region[static_cast<std::size_t>(t)]];
     ++r.first;
     r.second += signed_volume(mesh, static_cast<int>(t));
   }
@@ -43,8 +44,8 @@ void report_regions(const TetMesh& mesh, const LabelImage& image, double scale) 
   for (std::int32_t l : image.labels) ++voxels[l];
   const double voxel_volume = image.spacing.prod() * scale * scale * scale;
   for (const auto& [label, r] : tets) {
-    const auto name = image.names.find(label);
-    cli::info("region " + std::to_string(label) + (name != image.names.end() ? " (" + name->second + ")" : "") + ": " +
+    const auto name = mesh.region_names.find(label);
+    cli::info("region " + std::to_string(label) + (name != mesh.region_names.end() ? " (" + name->second + ")" : "") + ": " +
               std::to_string(r.first) + " tets, " + cli::three_digits(r.second) + " m^3 (voxels: " +
               cli::three_digits(static_cast<double>(voxels[label]) * voxel_volume) + " m^3)");
   }
@@ -55,7 +56,8 @@ MeshCommand image_command(CLI::App& app) {
   auto* cmd = add_mesh_command(
       app, "image",
       "unstructured tet mesh of a label map (segmented scan: .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd, .vti, .inr/.inr.gz), "
-      "one region per label (cell array region), conforming interfaces between labels (CGAL Mesh_3)",
+      "one region per label (cell array region; the labels' names, from the image or --names, as region names), "
+      "conforming interfaces between labels (CGAL Mesh_3)",
       "image liver.nrrd --scale 0.001 --labels 1,2 --size 0.005 -o liver.vtu", o->out);
   cmd->add_option("input", o->input, "label map: integer labels, 0 is background")->required();
   cmd->add_option("--size", o->mesh.size, "target edge length, m (tet count grows like 1/size^3)")->required()->check(cli::positive());

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/generate/image_smoothing.h"
 #include "xfem/generate/mesh_ordering.h"
 #include "xfem/io/vtk_io.h"
@@ -39,10 +40,16 @@ constexpr double radius_per_edge = 0.72;
 std::set<int> kept_labels(const LabelImage& image, const ImageMeshOptions& o, const std::string& name) {
   std::set<int> present(image.labels.begin(), image.labels.end());
   present.erase(0);
-  if (o.labels.empty()) return present;
+  if (o.labels.empty()) {
+    // Every non-zero label becomes a region, and regions are non-negative ids.
+    if (!present.empty() && *present.begin() < 0)
+      throw Error(name + ": label " + std::to_string(*present.begin()) +
+                  " is negative: regions are numbered from 1 (--labels to choose the positive ones)");
+    return present;
+  }
   std::set<int> kept;
   for (int l : o.labels) {
-    if (l == 0) throw Error(name + ": label 0 is the background; it cannot be meshed");
+    if (l <= 0) throw Error(name + ": label " + std::to_string(l) + (l == 0 ? " is the background; it cannot be meshed" : ": regions are numbered from 1"));
     if (!present.count(l)) {
       std::string list;
       for (int p : present) list += (list.empty() ? "" : ", ") + std::to_string(p);
@@ -141,7 +148,7 @@ TetMesh image_mesh(const LabelImage& image, const ImageMeshOptions& o, const std
   std::map<Tr::Vertex_handle, int> ids;
   std::vector<Eigen::Vector3d> points;
   std::vector<Eigen::Vector4i> tets;
-  std::vector<double> regions;
+  std::vector<int> regions;
   for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     Eigen::Vector4i t;
     for (int k = 0; k < 4; ++k) {
@@ -156,7 +163,7 @@ TetMesh image_mesh(const LabelImage& image, const ImageMeshOptions& o, const std
     }
     if (reflected) std::swap(t[1], t[2]);  // a reflection turns every tet inside out
     tets.push_back(t);
-    regions.push_back(static_cast<double>(c3t3.subdomain_index(c)));
+    regions.push_back(static_cast<int>(c3t3.subdomain_index(c)));
   }
   if (tets.empty()) throw Error(name + ": the mesher produced no tetrahedra (is the size too large for the labels?)");
   TetMesh mesh;
@@ -164,10 +171,12 @@ TetMesh image_mesh(const LabelImage& image, const ImageMeshOptions& o, const std
   for (std::size_t i = 0; i < points.size(); ++i) mesh.points.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
   mesh.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
   for (std::size_t i = 0; i < tets.size(); ++i) mesh.tets.row(static_cast<Eigen::Index>(i)) = tets[i].transpose();
-  DataArray region;
-  region.type = DataArray::Type::Int32;
-  region.values = std::move(regions);
-  mesh.cell_data["region"] = std::move(region);
+  set_tet_regions(mesh, regions);
+  for (int label : kept) {
+    const auto named = image.names.find(label);
+    if (named != image.names.end()) mesh.region_names[label] = named->second;
+  }
+  validate_regions(mesh, name);
   std::vector<std::string> warnings;
   validate_tet_mesh(mesh, name, &warnings);
   return spatially_ordered(mesh);

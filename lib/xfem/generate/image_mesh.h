@@ -29,7 +29,8 @@ double kept_voxel_volume(const LabelImage& image, const ImageMeshOptions& option
 /// A tetrahedral mesh of the voxels of the kept labels (CGAL Mesh_3's labelled-image domain: the
 /// boundary between two labels is where the trilinear interpolation of their indicator functions
 /// crosses, so that the regions' interfaces are conforming: every interface triangle is a face of
-/// one tet on each side). Each tet's label is the cell array "region" (Int32). Points are in world
+/// one tet on each side). Each tet's label is its region (the cell array "region", Int32,
+/// core/regions.h), the image's names of the kept labels the mesh's region names. Points are in world
 /// metres: scale * (origin + direction * (index * spacing)); a reflection in the direction keeps
 /// tets positively oriented. Criteria as unstructured_mesh.h's (facet angle 25 degrees, radius
 /// bounds 0.72 size, radius-edge ratio 3, slivers exuded without time limit, no perturbation);
@@ -39,7 +40,8 @@ double kept_voxel_volume(const LabelImage& image, const ImageMeshOptions& option
 /// steps no longer show in the mesh. Deterministic: the same image and options
 /// give the same mesh. Points and tets in Hilbert order (mesh_ordering.h).
 /// Throws xfem::Error (naming `name`) for a size or scale that is not positive and finite, labels
-/// the image lacks, no voxel to mesh, or an empty result.
+/// the image lacks, negative labels (regions are numbered from 1), no voxel to mesh, a name that
+/// is not a region name (validate_regions), or an empty result.
 TetMesh image_mesh(const LabelImage& image, const ImageMeshOptions& options, const std::string& name);
 
 }  // namespace xfem

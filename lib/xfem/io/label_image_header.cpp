@@ -142,6 +142,20 @@ void check_data_size(const std::string& path, const std::string& file, std::uint
                 short_number(expected) + (have < expected ? " (truncated file?)" : " (header and data disagree)"));
 }
 
+// zlib's deflate cannot compress more than 1032:1, so compressed data smaller than this share of
+// the voxels' bytes cannot hold them: a tiny hostile file would otherwise make the reader
+// allocate for (and inflate into) gigabytes.
+constexpr double max_deflate_ratio = 1032;
+void check_compressed_size(const std::string& path, const std::string& file, std::uintmax_t offset, double expected) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (ec) throw Error(path + ": cannot open its data file " + file);
+  const double have = size >= offset ? static_cast<double>(size - offset) : 0.0;
+  if (have * max_deflate_ratio < expected)
+    throw Error(path + ": " + short_number(have) + " bytes of compressed data cannot hold the header's " +
+                short_number(expected) + " bytes of voxels (truncated file?)");
+}
+
 const char* float_refusal = ": a label map stores integer labels (this looks like a grey-level image)";
 
 // ---- NRRD -------------------------------------------------------------------------------
@@ -232,19 +246,23 @@ LabelImageHeader nrrd_header(const std::string& path) {
   const std::string encoding = lower(fields["encoding"]);
   if (encoding != "raw" && encoding != "gzip" && encoding != "gz")
     throw Error(path + ": NRRD encoding '" + encoding.substr(0, 20) + "' is not supported (raw or gzip)");
-  if (encoding == "raw") {
+  {
     const double expected = static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * type.bytes;
     std::string file = path;
     std::uintmax_t offset = header_end;
     if (detached) {
       const std::string name = fields.count("data file") ? fields["data file"] : fields["datafile"];
-      if (name.rfind("LIST", 0) == 0 || name.find('%') != std::string::npos)
+      if (name.rfind("LIST", 0) == 0 || name.find('%') != std::string::npos || words(name).size() > 1)
         throw Error(path + ": NRRD data in several files is not supported (one detached data file)");
       file = (fs::path(path).parent_path() / name).string();
       offset = 0;
     }
-    const bool skip = fields.count("byte skip") && fields["byte skip"] != "0";
-    check_data_size(path, file, skip ? 0 : offset, expected, !skip);
+    if ((fields.count("byte skip") && fields["byte skip"] != "0") || (fields.count("line skip") && fields["line skip"] != "0"))
+      throw Error(path + ": NRRD byte skip and line skip are not supported");
+    if (encoding == "raw")
+      check_data_size(path, file, offset, expected, true);
+    else
+      check_compressed_size(path, file, offset, expected);
   }
   // VTK's reader takes a first axis of 9 or fewer samples for a vector's components, and reads
   // the rows of a left-anterior-superior space upside down: refused rather than misread.
@@ -337,13 +355,13 @@ LabelImageHeader metaimage_header(const std::string& path) {
   const std::string data = fields["ElementDataFile"];
   if (data == "LIST" || data.find('%') != std::string::npos)
     throw Error(path + ": MetaImage data in several files is not supported (LOCAL or one data file)");
-  if (!compressed) {
-    const double expected = static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * type->second.bytes;
-    if (data == "LOCAL")
-      check_data_size(path, path, header_end, expected, true);
-    else
-      check_data_size(path, (fs::path(path).parent_path() / data).string(), 0, expected, true);
-  }
+  const double expected = static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * type->second.bytes;
+  const std::string file = data == "LOCAL" ? path : (fs::path(path).parent_path() / data).string();
+  const std::uintmax_t offset = data == "LOCAL" ? header_end : 0;
+  if (compressed)
+    check_compressed_size(path, file, offset, expected);
+  else
+    check_data_size(path, file, offset, expected, true);
   return h;
 }
 
@@ -387,9 +405,13 @@ LabelImageHeader nifti_header(const std::string& path, bool gzipped) {
   check_spacing(h.spacing, path);
   const double vox_offset = field_at<float>(head, 108, swap);
   if (!(vox_offset >= 348 && vox_offset < 1e9)) throw Error(path + ": NIfTI vox_offset " + short_number(vox_offset) + " is not a data offset");
-  if (!gzipped && magic == "n+1")
-    check_data_size(path, path, static_cast<std::uintmax_t>(vox_offset),
-                    static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * type->second.bytes, false);
+  const double expected = static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * type->second.bytes;
+  if (magic != "n+1")
+    throw Error(path + ": a NIfTI header without its image (.hdr/.img pair) is not supported: one .nii or .nii.gz file");
+  if (gzipped)
+    check_compressed_size(path, path, 0, expected);
+  else
+    check_data_size(path, path, static_cast<std::uintmax_t>(vox_offset), expected, false);
   // The orientation (qform/sform) is VTK's to interpret (label_image_read.cpp).
   return h;
 }
@@ -428,7 +450,11 @@ LabelImageHeader inr_header(const std::string& path, bool gzipped) {
   }
   check_spacing(h.spacing, path);
   h.geometry_known = true;  // INRIMAGE has no origin or direction: voxel (0,0,0) at the origin
-  if (!gzipped) check_data_size(path, path, 256, static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * bits / 8, false);
+  const double expected = static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2] * bits / 8;
+  if (gzipped)
+    check_compressed_size(path, path, 0, expected);
+  else
+    check_data_size(path, path, 256, expected, false);
   return h;
 }
 
@@ -476,6 +502,9 @@ LabelImageHeader vti_header(const std::string& path) {
       for (int c = 0; c < 3; ++c) h.direction(r, c) = d[3 * r + c];
   }
   check_direction(h.direction, path);
+  // Whatever the encoding (raw, base64, zlib, ASCII), each voxel takes at least one byte before
+  // compression: a file too small for that is truncated or lies about its extent.
+  check_compressed_size(path, path, 0, static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2]);
   // The voxels' index frame starts at the extent's lower corner.
   h.origin += h.direction * Eigen::Vector3d(extent[0], extent[2], extent[4]).cwiseProduct(h.spacing);
   h.geometry_known = true;
