@@ -48,8 +48,8 @@ int main(int argc, char** argv) {
                                         "needed when the mesh has enriched DOFs (N > NP); several cuts: once per "
                                         "cut, as given to xfem-classify")
       ->allow_extra_args(false);
-  app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, integration, "
-                                               "dirichlet, neumann, body_force)")->required();
+  app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, materials (one "
+                                               "per region of the mesh), integration, dirichlet, neumann, body_force)")->required();
   app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
                                      "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
                                      "with m^3 > points, one centroid point each (default: problem.json's "
@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
     if (order > 0) problem.order = order;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
+    const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
     if (points == 0) points = problem.points;
     if (refine < 0) refine = problem.refine;
     long enriched_tets = 0;  // cost guard: integration points of the tets with enriched DOFs
@@ -104,7 +105,7 @@ int main(int argc, char** argv) {
     const double read = xfem::cli::now() - start;
 
     xfem::AssemblyStats s;
-    const xfem::LinearSystem system = xfem::assemble_system(em, problem, points, refine, &s, xfem::cli::progress("assembling"));
+    const xfem::LinearSystem system = xfem::assemble_system(em, problem, materials, points, refine, &s, xfem::cli::progress("assembling"));
     const double write_start = xfem::cli::now();
     // What the system was made from, so that xfem-solve can record it in u.mtx and later stages
     // can check the solution against the mesh, cut and problem they are given.

@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
   app.add_option("--front-of", front_of, "with several cuts: the cut (0, 1, ...) whose front to evaluate (default 0)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
-  app.add_option("-p,--problem", problem_path, "problem.json (material E, nu; body force)")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material E, nu, or each region's (materials): a "
+                                               "front point's domain must lie in one; body force)")->required();
   app.add_option("-o,--output", output, "front polyline with K_I, K_II, K_III, G (.vtp)");
   app.add_option("--csv", csv, "front as CSV: chain, arc_length, x, y, z, K_I, K_II, K_III, G, end");
   app.add_option("--png", png, "plot K along the front (gnuplot)");
@@ -115,6 +116,8 @@ int main(int argc, char** argv) {
                                                      : xfem::FrontAuxiliary::Curvilinear;
     const double R = options.radius > 0 ? options.radius : xfem::default_domain_radius(em);
     options.radius = R;
+    const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
+    options.materials = &materials;
     const auto points = xfem::front_stress_intensity(em, u, problem.E, problem.nu, problem.body_force, options,
                                                      xfem::cli::progress("interaction integrals"));
     int reaching = 0;

@@ -49,6 +49,11 @@ int main(int argc, char** argv) {
     run.problem_path = problem_path;
     const xfem::Problem problem = xfem::read_problem(problem_path);
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
+    // Several materials reach the nonlinear forces through BodyIntegration::materials, which the
+    // Newton driver (solve/newton_run) does not set yet: refuse rather than use one law for all.
+    if (!xfem::tet_materials(problem, em.mesh, input).of_tet.empty())
+      throw xfem::Error(problem_path + ": materials: xfem-newton solves a body of one material (give every region "
+                        "the same material, or solve the linear model with xfem-assemble and xfem-solve)");
     xfem::Json report;
     report["generator"] = std::string("xfem-newton ") + xfem::version;
     report["problem"] = problem_path;

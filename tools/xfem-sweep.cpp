@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   auto& app = tool->app;
   app.add_option("body", o.body_path, "tetrahedral mesh of the uncut body (.vtu/.vtk/.msh)")->required();
   app.add_option("-c,--cut", o.cut_path, "the sweep: cut triangles with cell array 'time' in s (.vtp/.vtu/.vtk)")->required();
-  app.add_option("-p,--problem", o.problem_path, "problem.json (material, integration, Dirichlet conditions with fixed "
-                                                 "values, Neumann, body force)")->required();
+  app.add_option("-p,--problem", o.problem_path, "problem.json (material, materials per region, integration, Dirichlet "
+                                                 "conditions with fixed values, Neumann, body force)")->required();
   app.add_option("--steps", o.steps, "number of steps K (>= 1)")->required();
   app.add_option("-o,--output", o.dir, "directory of the frames (created; files of the same names are replaced)")->required();
   app.add_option("--report", o.report_path, "JSON report: the factorization once, per step the time, counts and DOFs");

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "xfem/core/cli.h"
+#include "xfem/core/regions.h"
 #include "xfem/post/deformed_mesh.h"
 #include "xfem/post/deformed_volume.h"
 #include "xfem/post/solution_provenance_check.h"
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
                                         "to xfem-classify")
       ->allow_extra_args(false);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values, m")->required();
-  app.add_option("-p,--problem", problem_path, "problem.json (material E in Pa, nu, model, for the stresses)")->required();
+  app.add_option("-p,--problem", problem_path, "problem.json (material, materials per region: stresses)")->required();
   app.add_option("-o,--output", output, "deformed split mesh (.vtu)")->required();
   app.add_option("-f,--faces", faces, "also write both faces of the cut inside the body (.vtp, or .vtu: a grid of triangles)");
   app.add_option("--reactions", reactions_path, "xfem-solve --reactions output (3N x 1, N): written as the point "
@@ -108,8 +109,10 @@ int main(int argc, char** argv) {
     if (split.degenerate_faces > 0)
       xfem::cli::warn(std::to_string(split.degenerate_faces) + " faces with one split edge but no front point: "
                       "split at that edge only (the cut grazes a node or the front misses the face)");
-    xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), problem.E,
-                                                  problem.nu, xfem::cli::progress("evaluating"), wound_offset, problem.model);
+    const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
+    xfem::DeformedBody body = xfem::deformed_body(split, em.cut_class, xfem::xfem_displacement(em, u), materials,
+                                                  xfem::cli::progress("evaluating"), wound_offset);
+    xfem::inherit_regions(em.mesh, split.parent, body.volume);  // each cell's tissue, for ParaView
     const xfem::DeformedVolume volume = xfem::deformed_volume(body.volume, body.det_F);
     xfem::cli::info(xfem::describe(volume));
     if (const std::string w = xfem::inverted_warning(volume, problem.model); !w.empty()) xfem::cli::warn(w);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "xfem/core/regions.h"
 #include "xfem/generate/box_mesh.h"
 #include "xfem/geometry/cut_surface.h"
 #include "xfem/enrich/enriched_mesh.h"
@@ -100,6 +101,20 @@ inline xfem::EnrichedMesh cut_box(double cut_z) {
   em.local = local;
   em.cut = plane_cut(cut_z);
   return em;
+}
+
+/// Gives each tet of `mesh` the region `below` or `above` by its centroid's coordinate `axis`
+/// (0, 1, 2) against `at` (a plane of nodes, so that the interface is a mesh interface), as the
+/// cell array "region"; returns the regions.
+inline std::vector<int> split_regions(xfem::TetMesh& mesh, int axis, double at, int below, int above) {
+  std::vector<int> region(static_cast<std::size_t>(mesh.tets.rows()));
+  for (long t = 0; t < mesh.tets.rows(); ++t) {
+    double c = 0;
+    for (int k = 0; k < 4; ++k) c += mesh.points(mesh.tets(t, k), axis) / 4;
+    region[static_cast<std::size_t>(t)] = c < at ? below : above;
+  }
+  xfem::set_tet_regions(mesh, region);
+  return region;
 }
 
 }  // namespace xfem_test

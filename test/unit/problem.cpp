@@ -100,10 +100,10 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
     CHECK(error_of(j) == "problem.json: unknown key 'dirichlet[1].valeu' (allowed here: name, selector, value, exact, enriched_dofs, rotation, value_array)");
   }
   SECTION("unknown top-level key") {
-    j["materials"] = 1;
+    j["materails"] = 1;  // "materials" is a key (several materials); a misspelling of it is not
     CHECK(error_of(j) ==
-          "problem.json: unknown key 'materials' (allowed here: description, material, integration, dirichlet, "
-          "neumann, body_force, load_steps)");
+          "problem.json: unknown key 'materails' (allowed here: description, material, materials, integration, "
+          "dirichlet, neumann, body_force, load_steps)");
   }
   SECTION("wrong type") {
     j["dirichlet"][0]["value"] = {0, "zero", 0};

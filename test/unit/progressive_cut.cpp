@@ -18,10 +18,13 @@
 #include "xfem/geometry/cut_surface.h"
 #include "xfem/system/dirichlet.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
+#include "xfem/enrich/classification.h"
 #include "xfem/solve/incremental_schur.h"
 #include "xfem/io/paraview_collection.h"
 #include "xfem/progressive/progressive_cut.h"
 #include "xfem/solve/schur_solver.h"
+#include "enriched_test_meshes.h"
 
 namespace {
 
@@ -329,4 +332,42 @@ TEST_CASE("paraview collection: one DataSet per entry with its time and part", "
   CHECK(text.find("<DataSet timestep=\"0.5\" part=\"1\" file=\"a&amp;b.vtp\"/>") != std::string::npos);
   CHECK(text.find("<DataSet timestep=\"1\" part=\"0\" file=\"step_002.vtu\"/>") != std::string::npos);
   std::remove(path.c_str());
+}
+
+TEST_CASE("progressive cut: with two materials, the Schur step and the sweep's step equal the whole system assembled "
+          "with them", "[progressive_cut][materials]") {
+  // Region 2 above z = 1 (a grid plane) 7 times stiffer: the tets with enriched DOFs around the cut
+  // z = 0.93 lie in both regions.
+  xfem::TetMesh mesh = box();
+  xfem_test::split_regions(mesh, 2, 1.0, 1, 2);
+  xfem::Problem p = problem();
+  xfem::RegionMaterial stiff;
+  stiff.id = 2;
+  stiff.E = 7e3;
+  stiff.nu = 0.2;
+  p.materials.push_back(stiff);
+  const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);
+  const xfem::UncutBody one = xfem::factorize_uncut(mesh, problem());
+  xfem::ProgressiveCut sweeping(body);
+  int generation = 0;
+  for (double front : {0.3, 0.55, 1.2}) {
+    INFO("front at x = " << front);
+    const auto cut = partial_cut(front);
+    const xfem::CutSolution step = xfem::solve_cut(body, cut, {}, xfem::CutSolver::Schur);
+    std::vector<int> ids(static_cast<std::size_t>(cut->mesh().triangles.rows()));  // new triangles every step
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = 1000 * generation + static_cast<int>(i);
+    ++generation;
+    const xfem::CutSolution swept = sweeping.step(cut, ids);
+    const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
+    xfem::LinearSystem s = xfem::assemble_system(em, p, p.points, p.refine);
+    s.K = xfem::SparseMatrix(s.K.selfadjointView<Eigen::Lower>());
+    xfem::fix_unsupported_enrichment(s);
+    const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
+    const Eigen::VectorXd u = xfem::expand_solution(r, xfem::cholmod_solve(r.K, r.f).x, s.fixed, s.fixed_values);
+    CHECK((step.u - u).norm() <= 1e-10 * u.norm());
+    CHECK((swept.u - u).norm() <= 1e-10 * u.norm());
+    // And it is not the one-material answer.
+    const xfem::CutSolution single = xfem::solve_cut(one, cut, {}, xfem::CutSolver::Schur);
+    CHECK((single.u - u).norm() > 1e-3 * u.norm());
+  }
 }

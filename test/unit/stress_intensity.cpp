@@ -11,8 +11,10 @@
 #include "xfem/generate/cut_generation.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/fracture/exact_fields.h"
 #include "xfem/fracture/front_cost.h"
+#include "enriched_test_meshes.h"
 
 namespace {
 
@@ -274,4 +276,39 @@ TEST_CASE("stress_intensity: a value that is not finite is refused, naming the s
   pts[1].G = 0;
   pts[0].K2 = std::nan("");
   CHECK_THROWS_WITH(xfem::check_front_finite(pts, "u.mtx"), Catch::StartsWith("u.mtx: K_II = nan"));
+}
+
+TEST_CASE("stress_intensity: several materials: a domain in one material uses its E and nu; a domain holding two is "
+          "refused", "[stress_intensity][materials]") {
+  const auto cut = straight_cut();
+  xfem::EnrichedMesh em = enriched_box(4, cut, 10.0);
+  const xfem::WilliamsField w = field(0.7, -0.4, 0.25);
+  const Eigen::VectorXd u = williams_vector(em, w);
+  xfem::FrontSifOptions o;
+  o.radius = 0.2;  // q > 0 only at the nodes x = 0.5, z = 0.5: the domain is the tets of x, z in [0.25, 0.75]
+  o.spacing = 0.25;
+  const auto reference = xfem::front_stress_intensity(em, u, w.E, w.nu, Eigen::Vector3d::Zero(), o);
+  // Region 2 (x > 0.75, outside every domain) of another material; region 1 (the rest) has the
+  // field's. E and nu given as arguments are then not used: each domain's material is.
+  xfem::TetMaterials materials(xfem::MaterialModel::Linear, w.E, w.nu);
+  materials.add(xfem::MaterialModel::Linear, 50.0, 0.1);
+  std::vector<int> region = xfem_test::split_regions(em.mesh, 0, 0.75, 1, 2);
+  materials.of_tet.resize(region.size());
+  for (std::size_t t = 0; t < region.size(); ++t) materials.of_tet[t] = region[t] == 2 ? 1 : 0;
+  o.materials = &materials;
+  const auto several = xfem::front_stress_intensity(em, u, 5.0, 0.1, Eigen::Vector3d::Zero(), o);
+  REQUIRE(several.size() == reference.size());
+  for (std::size_t i = 0; i < several.size(); ++i) {  // the same arithmetic: the same bits
+    CHECK(several[i].K1 == reference[i].K1);
+    CHECK(several[i].K2 == reference[i].K2);
+    CHECK(several[i].K3 == reference[i].K3);
+    CHECK(several[i].G == reference[i].G);
+  }
+  // The interface x = 0.5 through the domain: refused, naming two regions.
+  region = xfem_test::split_regions(em.mesh, 0, 0.5, 1, 2);
+  for (std::size_t t = 0; t < region.size(); ++t) materials.of_tet[t] = region[t] == 2 ? 1 : 0;
+  CHECK_THROWS_WITH(xfem::front_stress_intensity(em, u, w.E, w.nu, Eigen::Vector3d::Zero(), o),
+                    (Catch::Contains("(radius 0.2 m) holds tets of two materials (regions 1 and 2)") ||
+                     Catch::Contains("(radius 0.2 m) holds tets of two materials (regions 2 and 1)")) &&
+                        Catch::Contains("reduce --radius"));
 }

@@ -17,6 +17,7 @@
 #include "xfem/enrich/enriched_basis.h"
 #include "xfem/enrich/side_codes.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
 #include "xfem/fracture/exact_fields.h"
 #include "xfem/fracture/front_cost.h"
 #include "xfem/geometry/point_location.h"
@@ -108,6 +109,33 @@ struct TetPoints {
   std::vector<Eigen::Matrix3d> grad_u, sigma;
 };
 
+// The material of the interaction integral's domain at front point f (the tets where the weight q
+// is positive at a node). The domain form without an interface term holds for one material only:
+// a domain holding two is refused, naming their regions.
+int domain_material(const EnrichedMesh& em, const TetMaterials& materials, const std::vector<double>& q,
+                    const FrontSif& f, double R) {
+  const TetMesh& mesh = em.mesh;
+  int material = -1;
+  long first = -1;
+  for (int t = 0; t < em.tets(); ++t) {
+    if (q[mesh.tets(t, 0)] <= 0 && q[mesh.tets(t, 1)] <= 0 && q[mesh.tets(t, 2)] <= 0 && q[mesh.tets(t, 3)] <= 0)
+      continue;
+    const int m = materials.index(t);
+    if (material < 0) {
+      material = m;
+      first = t;
+    } else if (m != material) {
+      const std::vector<int> region = tet_regions(mesh);
+      throw Error("front point at s = " + short_number(f.s) + " m of chain " + std::to_string(f.chain) +
+                  ": the interaction integral's domain (radius " + short_number(R) +
+                  " m) holds tets of two materials (regions " + std::to_string(region[static_cast<std::size_t>(first)]) +
+                  " and " + std::to_string(region[static_cast<std::size_t>(t)]) +
+                  "), and the domain form without an interface term needs one: reduce --radius");
+    }
+  }
+  return material < 0 ? 0 : material;
+}
+
 }  // namespace
 
 std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Eigen::VectorXd& u, double E, double nu,
@@ -131,6 +159,12 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
   const std::vector<FrontPolyline> chains = front_polylines(em.front);
   const Lame lm = lame(E, nu);
   const TetMesh& mesh = em.mesh;
+  // Several materials (problem.json `materials`): each point's domain must hold one, whose E and
+  // nu then replace the arguments' (checked per front point below).
+  const bool multi = options.materials && !options.materials->of_tet.empty();
+  if (multi && options.materials->of_tet.size() != static_cast<std::size_t>(em.tets()))
+    throw Error("front_stress_intensity: " + std::to_string(options.materials->of_tet.size()) + " materials for " +
+                std::to_string(em.tets()) + " tets");
   const long np = mesh.points.rows();
   const CutElementSplits splits = split_cut_elements(em);
   const int evaluated = evaluated_cut(em);
@@ -148,7 +182,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       // Several cuts: that side is a side code (side_codes.h); the auxiliary fields want the
       // point's side of the evaluated cut, the one the code holds (or, for code 0, its surface's).
       tp.rule.side[k] = evaluated < 0 ? side : side >= 2 ? code_side(side, evaluated) : em.cut->side(tp.rule.x[k]);
-      tp.sigma.push_back(stress(tp.grad_u.back(), lm));
+      tp.sigma.push_back(stress(tp.grad_u.back(), multi ? options.materials->lame(t) : lm));
     }
     return cache.emplace(t, std::move(tp)).first->second;
   };
@@ -240,6 +274,10 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       const double sn = node_s[f.chain][n];
       if (q[n] > 0 && on_surface[n] && (ch.closed || (sn > 1e-9 * ch.length && sn < (1 - 1e-9) * ch.length))) f.reaches_surface = true;
     }
+    const int material = multi ? domain_material(em, *options.materials, q, f, R) : 0;
+    const double E_f = multi ? options.materials->E[material] : E, nu_f = multi ? options.materials->nu[material] : nu;
+    const Lame lm_f = multi ? options.materials->laws[material].lame : lm;
+    const double denom_f = multi ? E_f / (2.0 * (1.0 - nu_f * nu_f)) : denom12;
     // Q: the trace of the interpolated q along the chain, by 2-point Gauss on 64 pieces per half-width.
     // The interpolated q reaches beyond s +- d by up to an element (a node inside the hat carries q
     // over its whole star): the trace is integrated over s +- (d + 2 h_max). (Cut at s +- d, Q
@@ -295,8 +333,8 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
     aux.origin = tangent ? f.x : Eigen::Vector3d::Zero();
     aux.a = tangent ? f.a : Eigen::Vector3d::UnitX();
     aux.b = tangent ? f.b : Eigen::Vector3d::UnitY();
-    aux.E = E;
-    aux.nu = nu;
+    aux.E = E_f;
+    aux.nu = nu_f;
     std::array<Eigen::Matrix<double, 3, 4>, 3> C;
     for (int m = 0; m < 3; ++m) {
       aux.K1 = m == 0;
@@ -367,7 +405,7 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
         const double qx = shape.values(x).dot(qc);
         for (int m = 0; m < 3; ++m) {
           const Eigen::Matrix3d Ga = tangent ? Eigen::Matrix3d(C[m] * F.dF) : Eigen::Matrix3d(Rx * C[m] * F.dF);
-          const Eigen::Matrix3d Sa = stress(Ga, lm);
+          const Eigen::Matrix3d Sa = stress(Ga, lm_f);
           const Eigen::Matrix3d ea = 0.5 * (Ga + Ga.transpose());
           const double Se = S.cwiseProduct(ea).sum();
           const Eigen::Vector3d Ga_a = Ga * ax;
@@ -438,11 +476,11 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
           Eigen::Matrix3d Rx;
           Rx << ax, nrm, cx;
           const Eigen::Matrix3d Gu = grad_u(sf.tet, x, evaluated < 0 ? side : side_code_at(em, evaluated, side, x));
-          const Eigen::Matrix3d S = stress(Gu, lm);
+          const Eigen::Matrix3d S = stress(Gu, lm_f);
           const Eigen::Vector3d Sn = S * sf.normal, Gu_a = Gu * ax;
           for (int m = 0; m < 3; ++m) {
             const Eigen::Matrix3d Ga = tangent ? Eigen::Matrix3d(C[m] * F.dF) : Eigen::Matrix3d(Rx * C[m] * F.dF);
-            const Eigen::Matrix3d Sa = stress(Ga, lm);
+            const Eigen::Matrix3d Sa = stress(Ga, lm_f);
             const double Se = S.cwiseProduct(0.5 * (Ga + Ga.transpose())).sum();
             I[m] += r[3] * area * qx * (Se * ax.dot(sf.normal) - Sn.dot(Ga * ax) - (Sa * sf.normal).dot(Gu_a));
           }
@@ -456,10 +494,10 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       }
     }
     I /= Q;
-    f.K1 = denom12 * I[0];
-    f.K2 = denom12 * I[1];
-    f.K3 = lm.mu * I[2];
-    f.G = (f.K1 * f.K1 + f.K2 * f.K2) / (2.0 * denom12) + f.K3 * f.K3 / (2.0 * lm.mu);
+    f.K1 = denom_f * I[0];
+    f.K2 = denom_f * I[1];
+    f.K3 = lm_f.mu * I[2];
+    f.G = (f.K1 * f.K1 + f.K2 * f.K2) / (2.0 * denom_f) + f.K3 * f.K3 / (2.0 * lm_f.mu);
     if (progress) progress(static_cast<double>(k + 1) / static_cast<double>(out.size()));
   }
   return out;

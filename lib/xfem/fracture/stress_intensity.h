@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/integrate/tet_materials.h"
 
 namespace xfem {
 
@@ -76,6 +77,10 @@ struct FrontSifOptions {
   bool surface_term = true;
   /// Run even when the cost estimate (front_cost.h) exceeds its limits (--allow-large).
   bool allow_large = false;
+  /// Each tet's material (problem.json `materials`); null, or one material: E and nu everywhere.
+  /// With several, each front point's domain (the tets where q > 0 at a node) must hold tets of
+  /// one material, whose E and nu are used there; else xfem::Error naming the point and two regions.
+  const TetMaterials* materials = nullptr;
 };
 
 /// One evaluation point on the front.

@@ -39,7 +39,12 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
                            MaterialModel model) {
   if (!(E > 0)) throw Error("deformed_body: Young's modulus E must be positive, got " + std::to_string(E));
   if (!(nu > -1 && nu < 0.5)) throw Error("deformed_body: Poisson's ratio nu must be in (-1, 0.5), got " + std::to_string(nu));
-  const MaterialLaw law{model, lame(E, nu)};
+  return deformed_body(split, cut_class, u, TetMaterials(model, E, nu), progress, wound_offset);
+}
+
+DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
+                           const TetMaterials& materials, const std::function<void(double)>& progress,
+                           double wound_offset) {
   const Eigen::Index np = split.points.rows(), nt = split.tets.rows();
 
   DeformedBody out;
@@ -73,7 +78,7 @@ DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_c
       Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
       for (int c = 0; c < 4; ++c) centroid += split.points.row(split.tets(t, c)).transpose() / 4;
       const int p = split.parent[t];
-      const CellStress cs = cell_stress(law, u.gradient(p, centroid, split.tet_side[t]));
+      const CellStress cs = cell_stress(materials.law(p), u.gradient(p, centroid, split.tet_side[t]));
       // VTK's order of a symmetric tensor's 6 components (as ParaView reads them).
       static const int kI[6] = {0, 1, 2, 0, 1, 0}, kJ[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; ++c) {

@@ -6,6 +6,7 @@
 #include "xfem/geometry/element_split.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/integrate/material_law.h"
+#include "xfem/integrate/tet_materials.h"
 
 namespace xfem {
 
@@ -52,6 +53,11 @@ struct DeformedBody {
 DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
                            double E, double nu, const std::function<void(double)>& progress = {},
                            double wound_offset = 1e-4, MaterialModel model = MaterialModel::Linear);
+/// The same with each input tet's own material (problem.json `materials`): a cell's stress is its
+/// parent tet's law's (materials.law(parent)).
+DeformedBody deformed_body(const SplitMesh& split, const std::vector<int>& cut_class, const DisplacementField& u,
+                           const TetMaterials& materials, const std::function<void(double)>& progress = {},
+                           double wound_offset = 1e-4);
 
 /// How far the cut opened: over the points of the cut present once per side (same position),
 /// the jump d = u(x, +1) - u(x, -1) and its normal part d . n(x), n the cut's unit normal there

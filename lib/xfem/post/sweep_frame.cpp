@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "xfem/core/cli.h"
+#include "xfem/core/regions.h"
 #include "xfem/geometry/element_split.h"
 #include "xfem/io/matrix_market.h"
 
@@ -16,7 +17,10 @@ DeformedBody sweep_frame(const CutSolution& step, const Problem& problem) {
   const EnrichedMesh& em = step.em;
   const SplitMesh split = em.cut ? split_mesh(em.mesh, em.side, em.cut_class, *em.cut, em.front.segments())
                                  : unsplit_mesh(em.mesh, em.side);
-  return deformed_body(split, em.cut_class, xfem_displacement(em, step.u), problem.E, problem.nu);
+  DeformedBody frame =
+      deformed_body(split, em.cut_class, xfem_displacement(em, step.u), tet_materials(problem, em.mesh, "the body"));
+  inherit_regions(em.mesh, split.parent, frame.volume);
+  return frame;
 }
 
 std::string numbered(const std::string& stem, int k, const std::string& extension) {

@@ -67,6 +67,7 @@ void run_sweep(const SweepOptions& o) {
   check_finite_times(times, t, o.cut_path);
   const Problem problem = read_problem(o.problem_path);
   require_linear_material(problem, "xfem-sweep solves linear systems only");
+  tet_materials(problem, mesh, o.body_path);  // an unknown region is named with the body's file before any work
   std::filesystem::create_directories(o.dir);
 
   double start = cli::now();

@@ -47,9 +47,10 @@ UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering 
   UncutBody body;
   body.mesh = mesh;
   body.problem = problem;
+  body.materials = tet_materials(problem, mesh, "the body");
   const auto t0 = std::chrono::steady_clock::now();
   const EnrichedMesh em = enriched_mesh(mesh, classify_without_cut(mesh), nullptr);
-  LinearSystem s = assemble_system(em, problem, problem.points, problem.refine);
+  LinearSystem s = assemble_system(em, problem, body.materials, problem.points, problem.refine);
   body.assemble_seconds = seconds_since(t0);
   require_constrained(s);
   body.fixed = s.fixed;
@@ -95,6 +96,15 @@ void classify_and_enrich(const UncutBody& body, const std::shared_ptr<const CutS
     if (!pieces[i].constrained)
       throw Error("the cut body falls apart into " + std::to_string(pieces.size()) + " pieces; piece " +
                   std::to_string(i + 1) + " (" + std::to_string(pieces[i].tets) + " tets) has no Dirichlet condition");
+}
+
+// The materials of the tets `tets`, in their order (the sub-mesh's tets).
+TetMaterials materials_of(const TetMaterials& all, const std::vector<int>& tets) {
+  TetMaterials out = all;
+  if (all.of_tet.empty()) return out;
+  out.of_tet.resize(tets.size());
+  for (std::size_t i = 0; i < tets.size(); ++i) out.of_tet[i] = all.of_tet[static_cast<std::size_t>(tets[i])];
+  return out;
 }
 
 // The tets `tets` of `em` alone, in their order, on the points they use renumbered in order (the
@@ -159,7 +169,7 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
   const Problem& problem = body.problem;
   const bool conforming = problem.rule == Problem::Rule::Conforming;
   const SparseMatrix K = tets.empty() ? SparseMatrix(0, 0)
-                                      : stiffness_matrix(sub, lame(problem.E, problem.nu),
+                                      : stiffness_matrix(sub, materials_of(body.materials, tets),
                                                          oversampling_quadrature(problem.points, problem.refine),
                                                          nullptr, {}, conforming ? problem.order : 0);
   // Scalar DOF of the sub-mesh -> scalar DOF of the whole system.
@@ -403,7 +413,6 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   const auto t1 = std::chrono::steady_clock::now();
   if (!stale.empty()) {
     const EnrichedMesh sub = sub_mesh(em, stale);
-    const Lame material = lame(problem.E, problem.nu);
     const bool conforming = problem.rule == Problem::Rule::Conforming;
     const CutElementSplits splits = conforming ? split_cut_elements(sub) : CutElementSplits();
     std::vector<Element*> slots(stale.size());
@@ -418,9 +427,10 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
         Element& element = *slots[i];
         if (conforming) {
           conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
-          element_stiffness_at_points(sub, static_cast<int>(i), points, material, element.k, problem.order);
+          element_stiffness_at_points(sub, static_cast<int>(i), points, body_.materials.lame(stale[i]), element.k,
+                                      problem.order);
         } else {
-          element_stiffness(sub, static_cast<int>(i), rule_, material, element.k);
+          element_stiffness(sub, static_cast<int>(i), rule_, body_.materials.lame(stale[i]), element.k);
         }
       }
     }, {}, 8);

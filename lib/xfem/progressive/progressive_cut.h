@@ -27,6 +27,7 @@ EnrichedMesh enriched_mesh(const TetMesh& mesh, const Classification& c, std::sh
 struct UncutBody {
   TetMesh mesh;                    ///< the body (its arrays kept, for the Dirichlet selectors)
   Problem problem;
+  TetMaterials materials;          ///< each tet's material (problem.json `materials`, tet_materials())
   std::vector<long> fixed;         ///< constrained scalar DOFs (original DOFs only)
   std::vector<double> fixed_values;
   Eigen::VectorXd constrained;     ///< 3 NP: the prescribed values at `fixed`, 0 elsewhere

@@ -84,6 +84,13 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
                               int conforming_order) {
+  return stiffness_matrix(em, TetMaterials(MaterialLaw{MaterialModel::Linear, material}), rule, stats, progress,
+                          conforming_order);
+}
+
+SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
+                              AssemblyStats* stats, const std::function<void(double)>& progress,
+                              int conforming_order) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -102,7 +109,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
       enriched.push_back(t);
       continue;
     }
-    scatter_plain_tet(em, p, outer, t, material, values);
+    scatter_plain_tet(em, p, outer, t, materials.lame(t), values);
     if (progress && (t & 0xffff) == 0) progress(double(t) / tets);
   }
   s.standard_tets += tets - static_cast<long>(enriched.size());
@@ -126,9 +133,9 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, cons
         const int t = enriched[static_cast<std::size_t>(first + i)];
         if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
-          element_stiffness_at_points(em, t, points, material, ks[i], conforming_order, &faces);
+          element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
         } else {
-          element_stiffness(em, t, rule, material, ks[i]);
+          element_stiffness(em, t, rule, materials.lame(t), ks[i]);
         }
       }
     }, {}, chunk);
@@ -189,6 +196,11 @@ std::vector<long> unsupported_dofs(const SparseMatrix& K, long first) {
 LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int points, int refine,
                              AssemblyStats* stats,
                              const std::function<void(double)>& progress) {
+  return assemble_system(em, problem, tet_materials(problem, em.mesh, "the mesh"), points, refine, stats, progress);
+}
+
+LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, const TetMaterials& materials, int points,
+                             int refine, AssemblyStats* stats, const std::function<void(double)>& progress) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   LinearSystem sys;
@@ -199,7 +211,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int
   const bool conforming = problem.rule == Problem::Rule::Conforming;
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
-  sys.K = stiffness_matrix(em, lame(problem.E, problem.nu), oversampling_quadrature(points, refine), &s, progress,
+  sys.K = stiffness_matrix(em, materials, oversampling_quadrature(points, refine), &s, progress,
                            conforming ? problem.order : 0);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "xfem/integrate/element_stiffness.h"
+#include "xfem/integrate/tet_materials.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/system/linear_system.h"
 #include "xfem/io/matrix_market.h"
@@ -33,6 +34,10 @@ struct AssemblyStats {
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
                               int conforming_order = 0);
+/// The same with each tet's own material (materials.lame(t); problem.json `materials`).
+SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
+                              AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
+                              int conforming_order = 0);
 
 /// The load vector f (3N, newtons; paper formula (7)) on the ORIGINAL DOFs only (DESIGN.md):
 /// body force b V/4 to each node of each tet (exact for linear N), traction t A/3 to each node of
@@ -52,5 +57,10 @@ std::vector<long> unsupported_dofs(const SparseMatrix& K, long first);
 /// order problem.order instead.
 LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, int points, int refine,
                              AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {});
+/// The same with each tet's material given (tet_materials() of problem.h, which the overload
+/// above calls, naming the mesh "the mesh" in its errors).
+LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, const TetMaterials& materials, int points,
+                             int refine, AssemblyStats* stats = nullptr,
+                             const std::function<void(double)>& progress = {});
 
 }  // namespace xfem

@@ -56,7 +56,9 @@ bool internal_forces(const EnrichedMesh& em, const BodyIntegration& body, const 
         const int n = em.size(t);
         ue.resize(3 * n);
         for (int c = 0; c < n; ++c) ue.segment<3>(3 * c) = u.segment<3>(3 * em.dofs[base + c]);
-        if (!element_forces(body.tets[static_cast<std::size_t>(t)], law, ue, K != nullptr, results[i], kind)) inverted = true;
+        const MaterialLaw& tet_law = body.materials ? body.materials->law(t) : law;
+        if (!element_forces(body.tets[static_cast<std::size_t>(t)], tet_law, ue, K != nullptr, results[i], kind))
+          inverted = true;
       }
     }, {}, 64);
     if (inverted) break;

@@ -5,7 +5,11 @@
 #include <fstream>
 #include <initializer_list>
 
+#include <algorithm>
+#include <map>
+
 #include "xfem/core/boundary_groups.h"
+#include "xfem/core/regions.h"
 #include "xfem/core/error.h"
 
 namespace xfem {
@@ -108,6 +112,23 @@ void check_material(const Node& n, double E, double nu) {
   if (!(nu > -1.0 && nu < 0.5)) n.fail("nu must lie in (-1, 0.5), got " + short_number(nu));
 }
 
+// E, nu and the optional model of a material object (`material` or an entry of `materials`).
+void parse_material(const Node& material, double& E, double& nu, MaterialModel& model) {
+  E = material.at("E").number();
+  if (!(E > 0)) material.at("E").fail("must be positive, got " + material.at("E").j.dump());
+  nu = material.at("nu").number();
+  if (!(nu > -1.0 && nu < 0.5)) material.at("nu").fail("must lie in (-1, 0.5), got " + material.at("nu").j.dump());
+  if (material.has("model")) {
+    const Node m = material.at("model");
+    const std::string name = m.string();
+    try {
+      model = material_model_named(name);
+    } catch (const Error&) {
+      m.fail("must be \"linear\", \"corotational\" or \"neo-hookean\", got \"" + name + "\"");
+    }
+  }
+}
+
 RigidMotion parse_rigid_motion(const Node& n) {
   n.require_object({"translation", "rotation", "centre"});
   RigidMotion m;
@@ -191,23 +212,37 @@ std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").s
 
 Problem parse_problem(const Json& j, const std::string& file) {
   const Node root{j, file, ""};
-  root.require_object({"description", "material", "integration", "dirichlet", "neumann", "body_force", "load_steps"});
+  root.require_object({"description", "material", "materials", "integration", "dirichlet", "neumann", "body_force", "load_steps"});
   Problem p;
   p.file = file;
   if (root.has("description")) root.at("description").string();
   const Node material = root.at("material");
   material.require_object({"E", "nu", "model"});
-  p.E = material.at("E").number();
-  if (!(p.E > 0)) material.at("E").fail("must be positive, got " + material.at("E").j.dump());
-  p.nu = material.at("nu").number();
-  if (!(p.nu > -1.0 && p.nu < 0.5)) material.at("nu").fail("must lie in (-1, 0.5), got " + material.at("nu").j.dump());
-  if (material.has("model")) {
-    const Node model = material.at("model");
-    const std::string name = model.string();
-    try {
-      p.model = material_model_named(name);
-    } catch (const Error&) {
-      model.fail("must be \"linear\", \"corotational\" or \"neo-hookean\", got \"" + name + "\"");
+  parse_material(material, p.E, p.nu, p.model);
+  if (root.has("materials")) {
+    const Node list = root.at("materials");
+    for (std::size_t i = 0; i < list.array_size(); ++i) {
+      const Node m = list.at(i);
+      m.require_object({"region", "E", "nu", "model"});
+      RegionMaterial r;
+      r.model = p.model;  // a region without "model" has the default's
+      const Node region = m.at("region");
+      if (region.j.is_string()) {
+        r.name = region.string();
+        if (r.name.empty()) region.fail("must name a region (a non-empty string) or be its id");
+      } else if (region.j.is_number_integer() && region.j.get<long long>() >= 0 &&
+                 region.j.get<long long>() <= max_region_id) {
+        r.id = region.j.get<int>();
+      } else {
+        region.fail("must be a region id (an integer in 0.." + std::to_string(max_region_id) + ") or a name, got " +
+                    region.j.dump());
+      }
+      parse_material(m, r.E, r.nu, r.model);
+      for (std::size_t k = 0; k < p.materials.size(); ++k)
+        if ((r.id >= 0 && p.materials[k].id == r.id) || (!r.name.empty() && p.materials[k].name == r.name))
+          region.fail("lists region " + region.j.dump() + " again (materials[" + std::to_string(k) +
+                      "] gives its material)");
+      p.materials.push_back(r);
     }
   }
   if (root.has("load_steps")) {
@@ -376,10 +411,54 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
 }
 
 void require_linear_material(const Problem& problem, const std::string& reason) {
-  if (problem.model == MaterialModel::Linear) return;
-  const std::string name = material_model_name(problem.model);
-  throw Error(problem.file + ": " + reason + ": material.model \"" + name + "\" is not supported (use \"linear\"; " +
+  std::string where = "material.model";
+  MaterialModel model = problem.model;
+  for (std::size_t i = 0; i < problem.materials.size() && model == MaterialModel::Linear; ++i) {
+    model = problem.materials[i].model;
+    where = "materials[" + std::to_string(i) + "].model";
+  }
+  if (model == MaterialModel::Linear) return;
+  const std::string name = material_model_name(model);
+  throw Error(problem.file + ": " + reason + ": " + where + " \"" + name + "\" is not supported (use \"linear\"; " +
               "xfem-newton solves \"" + name + "\")");
+}
+
+TetMaterials tet_materials(const Problem& problem, const TetMesh& mesh, const std::string& mesh_file) {
+  TetMaterials out(problem.model, problem.E, problem.nu);
+  if (problem.materials.empty()) return out;
+  const std::vector<int> region = tet_regions(mesh);
+  const std::vector<int> ids = region_ids(mesh);
+  std::map<int, int> law_of;  // region id -> index into out.laws (equal materials share one)
+  for (std::size_t i = 0; i < problem.materials.size(); ++i) {
+    const RegionMaterial& m = problem.materials[i];
+    int id = m.id;
+    if (!m.name.empty())
+      for (const auto& [named, name] : mesh.region_names)
+        if (name == m.name) id = named;
+    const bool known = id >= 0 && (std::binary_search(ids.begin(), ids.end(), id) || mesh.region_names.count(id));
+    if (!known)
+      throw Error(problem.file + ": materials[" + std::to_string(i) + "].region " +
+                  (m.name.empty() ? std::to_string(m.id) : "'" + m.name + "'") + " is not a region of " + mesh_file +
+                  " (its regions: " + region_list(mesh) + ")");
+    if (law_of.count(id))
+      throw Error(problem.file + ": materials[" + std::to_string(i) + "].region names region " + std::to_string(id) +
+                  " again (materials lists each region once)");
+    law_of[id] = out.add(m.model, m.E, m.nu);
+  }
+  out.of_tet.resize(region.size());
+  bool all_default = true;
+  for (std::size_t t = 0; t < region.size(); ++t) {
+    const auto it = law_of.find(region[t]);
+    out.of_tet[t] = it == law_of.end() ? 0 : it->second;
+    all_default = all_default && out.of_tet[t] == 0;
+  }
+  if (all_default) {  // one material: the single-material code path
+    out.of_tet.clear();
+    out.laws.resize(1);
+    out.E.resize(1);
+    out.nu.resize(1);
+  }
+  return out;
 }
 
 }  // namespace xfem

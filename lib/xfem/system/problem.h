@@ -10,6 +10,7 @@
 #include "xfem/core/json_io.h"
 #include "xfem/core/mesh.h"
 #include "xfem/integrate/material_law.h"
+#include "xfem/integrate/tet_materials.h"
 
 namespace xfem {
 
@@ -64,6 +65,15 @@ struct NeumannCondition {
   Eigen::Vector3d traction = Eigen::Vector3d::Zero();
 };
 
+/// One entry of problem.json `materials`: the material of one region of the mesh (core/regions.h),
+/// by id or by name (the mesh's region_names).
+struct RegionMaterial {
+  int id = -1;       ///< the region's id; -1 when it is named
+  std::string name;  ///< the region's name; empty when it is given by id
+  double E = 0.0, nu = 0.0;
+  MaterialModel model = MaterialModel::Linear;  ///< problem.json's material.model when not given
+};
+
 /// A static linear-elastic problem: the contents of problem.json (docs/FORMATS.md).
 struct Problem {
   std::string file;     ///< where it was read from, for messages
@@ -72,6 +82,9 @@ struct Problem {
   /// material.model: the law of the nonlinear solve (material_law.h); the linear tools refuse any
   /// other than Linear (require_linear_material).
   MaterialModel model = MaterialModel::Linear;
+  /// materials: the regions with a material of their own; E, nu and model above are the material
+  /// of every other tet. Read without the mesh: tet_materials() checks the regions.
+  std::vector<RegionMaterial> materials;
   /// load_steps: the nonlinear solve applies the loads in this many equal steps (>= 1); the
   /// linear tools ignore it.
   int load_steps = 1;
@@ -91,7 +104,9 @@ struct Problem {
 /// Reads and validates problem.json. Throws xfem::Error with one line naming the file and the
 /// item: unknown key, missing field, wrong type, E <= 0, nu outside (-1, 0.5), points < 1, a
 /// refine outside 0..8, a rule other than "oversampling" / "conforming", an order outside 1..20, a zero normal, an empty box,
-/// an unknown material.model, a load_steps outside 1..1000000, e.g. "problem.json: material.E must be positive, got -3".
+/// an unknown material.model, a `materials` entry with a region that is neither a non-negative
+/// integer nor a non-empty name, bad E / nu / model, or a region listed twice (the same id or
+/// name), a load_steps outside 1..1000000, e.g. "problem.json: material.E must be positive, got -3".
 Problem read_problem(const std::string& path);
 /// The same from parsed JSON; `file` names it in messages.
 Problem parse_problem(const Json& j, const std::string& file);
@@ -116,6 +131,14 @@ std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, con
 /// (use \"linear\"; xfem-newton solves \"neo-hookean\")". `reason` says why the tool is
 /// small-strain, e.g. "xfem-front's interaction integral is small-strain".
 void require_linear_material(const Problem& problem, const std::string& reason);
+
+/// The material of each tet of `mesh` (read from `mesh_file`): the entry of problem.materials
+/// naming its region, else problem.json's `material`. Entries with equal model, E and nu share one
+/// law; when every tet has the default's law the result has no per-tet table (the single-material
+/// path). Throws xfem::Error "<file>: materials[1].region 'tumor' is not a region of body.vtu (its
+/// regions: 1 'liver', 2 'tumour')" for a region the mesh has neither as a tet's region nor as a
+/// name, or "... names region 2 again (by name)" when an id and a name are the same region.
+TetMaterials tet_materials(const Problem& problem, const TetMesh& mesh, const std::string& mesh_file);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);
