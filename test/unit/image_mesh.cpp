@@ -131,7 +131,7 @@ TEST_CASE("a label map's regions: volumes to 1 %, labels at the centroids, confo
   CHECK(faces.size() == face_regions.size());
 }
 
-TEST_CASE("--labels keeps the named labels; unknown labels are refused", "[image_mesh]") {
+TEST_CASE("image meshes keep the labels asked for and refuse unknown or negative ones", "[image_mesh]") {
   const LabelImage im = nested_balls();
   xfem::ImageMeshOptions o;
   o.scale = 0.001;
