@@ -20,6 +20,7 @@
 #include "xfem/io/matrix_market.h"
 #include "xfem/system/problem.h"
 #include "xfem/io/vtk_io.h"
+#include "xfem/io/label_image.h"
 
 namespace {
 
@@ -95,6 +96,12 @@ const std::map<std::string, Reader>& readers() {
          }
          xfem::read_triangle_mesh(path);
        }},
+      // Label maps (label_image.h): the header checks, then VTK's or CGAL's reader.
+      {"nrrd", [](const std::uint8_t* d, std::size_t n) { xfem::read_label_image(file_with("labels.nrrd", d, n)); }},
+      {"nii", [](const std::uint8_t* d, std::size_t n) { xfem::read_label_image(file_with("labels.nii", d, n)); }},
+      {"mha", [](const std::uint8_t* d, std::size_t n) { xfem::read_label_image(file_with("labels.mha", d, n)); }},
+      {"inr", [](const std::uint8_t* d, std::size_t n) { xfem::read_label_image(file_with("labels.inr", d, n)); }},
+      {"vti", [](const std::uint8_t* d, std::size_t n) { xfem::read_label_image(file_with("labels.vti", d, n)); }},
   };
   return all;
 }

@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev  # exact geometry, AABB trees, Mesh_3
+  libcgal-demo                                     # CGAL's data: the liver label map of the scan pipeline
   libeigen3-dev                                    # dense and sparse linear algebra
   libsuitesparse-dev libmetis-dev                  # CHOLMOD with METIS ordering
   liblapack-dev libblas-dev                        # dense Cholesky updates of progressive cutting (xfem-sweep)

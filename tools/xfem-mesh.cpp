@@ -8,7 +8,8 @@
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(
-      "xfem-mesh", "Makes inputs: tetrahedral meshes (.vtu) and cut surfaces (.vtp). Same arguments, same bytes.",
+      "xfem-mesh", "Makes inputs: tetrahedral meshes (.vtu; also of segmented scans: xfem-mesh image), cut surfaces (.vtp) "
+      "and synthetic label maps (.nrrd). Same arguments, same bytes.",
       "xfem-mesh unstructured-box --hi 0.03 0.06 0.2 --size 0.006 -o beam.vtu\n"
       "  xfem-mesh cut-rect --beam-cut -o cut.vtp\n  (xfem-mesh <command> --help for each command's options)");
   auto& app = tool->app;

@@ -16,7 +16,7 @@ TEST_CASE("xfem-mesh's commands register in their order", "[generate]") {
     CHECK(c.app->get_option("--output")->get_required());
     CHECK(c.app->get_option("--allow-large"));
   }
-  CHECK(names == std::vector<std::string>{"box", "unstructured-box", "organ", "surface", "cut-rect", "cut-sine",
+  CHECK(names == std::vector<std::string>{"box", "unstructured-box", "organ", "surface", "image", "phantom-image", "cut-rect", "cut-sine",
                                           "cut-disc", "cut-zigzag", "cut-merge", "cut-sweep"});
 }
 

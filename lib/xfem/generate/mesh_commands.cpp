@@ -8,6 +8,7 @@
 #include "xfem/core/cli.h"
 #include "xfem/generate/box_mesh.h"
 #include "xfem/generate/generation_limits.h"
+#include "xfem/generate/image_commands.h"
 #include "xfem/generate/organ_shape.h"
 #include "xfem/generate/unstructured_mesh.h"
 #include "xfem/io/vtk_io.h"
@@ -136,7 +137,10 @@ MeshCommand surface_command(CLI::App& app) {
 }  // namespace
 
 std::vector<MeshCommand> add_volume_mesh_commands(CLI::App& app) {
-  return {box_command(app), unstructured_box_command(app), organ_command(app), surface_command(app)};
+  std::vector<MeshCommand> commands = {box_command(app), unstructured_box_command(app), organ_command(app),
+                                       surface_command(app)};
+  for (auto& c : add_image_commands(app)) commands.push_back(std::move(c));
+  return commands;
 }
 
 }  // namespace xfem

@@ -25,7 +25,8 @@ struct MeshCommandOutput {
 CLI::App* add_mesh_command(CLI::App& app, const char* name, const char* what, const char* example,
                            MeshCommandOutput& output);
 
-/// xfem-mesh's tetrahedral meshes (.vtu), in this order: box, unstructured-box, organ, surface.
+/// xfem-mesh's tetrahedral meshes (.vtu), in this order: box, unstructured-box, organ, surface, and
+/// the label-map commands image and phantom-image (image_commands.h).
 std::vector<MeshCommand> add_volume_mesh_commands(CLI::App& app);
 
 }  // namespace xfem
