@@ -22,6 +22,8 @@
       the same numbers (the fingerprint comments aside, which name the problem file).
   close-values A.mtx B.mtx
       the same numbers to 1e-10 of B's largest.
+  same-vtu A.vtu B.vtu
+      the same points, cells and arrays bit for bit, inputs_fingerprint aside (it hashes problem.json).
 
 FIELD.json: {"sigma": S, "split": C, "E": [E1, E2], "ratio": R, "translation": [tx, ty, tz]}: uniaxial
 stress S along x (the interface's normal) with nu / E = R in both regions, so that the lateral
@@ -208,6 +210,19 @@ def cmd_close_values(a):
     return 0 if err <= 1e-10 * scale else 1
 
 
+def cmd_same_vtu(a):
+    """The two files' points, cells and arrays equal bit for bit, the inputs_fingerprint aside (it
+    hashes problem.json, which differs by design)."""
+    x, y = read_vtk_xml(a.a), read_vtk_xml(a.b)
+    for d in (x, y):
+        d["field"].pop("inputs_fingerprint", None)
+    for key in ("points", "cells", "point", "cell", "field"):
+        if x[key] != y[key]:
+            print(f"{a.a} and {a.b} differ in their {key}")
+            return 1
+    return 0
+
+
 def main():
     p = argparse.ArgumentParser()
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -241,9 +256,13 @@ def main():
     v = sub.add_parser("close-values")
     v.add_argument("a")
     v.add_argument("b")
+    w = sub.add_parser("same-vtu")
+    w.add_argument("a")
+    w.add_argument("b")
     a = p.parse_args()
     return {"regions": cmd_regions, "msh": cmd_msh, "check-bar": cmd_check_bar, "check-patch": cmd_check_patch,
-            "same-values": cmd_same_values, "close-values": cmd_close_values}[a.cmd](a)
+            "same-values": cmd_same_values, "close-values": cmd_close_values,
+            "same-vtu": cmd_same_vtu}[a.cmd](a)
 
 
 if __name__ == "__main__":
