@@ -80,8 +80,14 @@ mkdir -p "$S/blocked/step_003.vtu"
 [ $? -eq 1 ] && grep -qF "step_003.vtu: cannot rename temporary file" "$S/err.txt" || fail "unwritable frame: $(cat "$S/err.txt")"
 # Pictures: one per step, under xvfb-run as the other pictures.
 if command -v xvfb-run >/dev/null; then
-  xvfb-run -a "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/pictures" --png \
-    --width 320 --height 240 || fail "--png"
+  # xvfb-run -a picks a display by its lock files; another program's X server starting at that
+  # moment (a second build's tests on the same machine) can take it first ("bad X server
+  # connection"): such a start is tried again, a failure of the sweep itself is not.
+  for attempt in 1 2 3; do
+    xvfb-run -a "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 2 -o "$S/pictures" --png \
+      --width 320 --height 240 2>"$S/png.err" && break
+    grep -q "bad X server connection" "$S/png.err" && [ $attempt -lt 3 ] || { cat "$S/png.err"; fail "--png"; }
+  done
   [ -s "$S/pictures/step_001.png" ] && [ -s "$S/pictures/step_002.png" ] || fail "--png: pictures missing"
 fi
 # mtx_values FILE: the values of a Matrix Market array vector, one per line.
