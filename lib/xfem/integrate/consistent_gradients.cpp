@@ -200,17 +200,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
     for (int j = i + 1; j < 4; ++j) h = std::max(h, (corner[i] - corner[j]).norm());
   const double tolerance = 1e-12 * h;
   const std::vector<int> meeting = cut ? cut->triangles_meeting(corner) : std::vector<int>();
-  // The front segments near the tet (its bounding box, grown by the tolerance).
-  Eigen::Vector3d lo = corner[0], hi = corner[0];
-  for (const auto& x : corner) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  std::vector<const FrontSegment*> fronts;
-  for (const FrontSegment& segment : front.segments())
-    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
-        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
-      fronts.push_back(&segment);
+  const std::vector<const FrontSegment*> fronts = fronts_near(front, corner, tolerance);
 
   std::vector<Eigen::Vector3d> x;
   std::vector<double> w;

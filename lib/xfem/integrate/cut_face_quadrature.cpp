@@ -114,6 +114,21 @@ Eigen::Vector3d polygon_fan_apex(const Polygon& poly, const Eigen::Vector3d& nor
 }
 
 
+std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std::array<Eigen::Vector3d, 4>& corners,
+                                             double tolerance) {
+  Eigen::Vector3d lo = corners[0], hi = corners[0];
+  for (const auto& x : corners) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::vector<const FrontSegment*> fronts;
+  for (const FrontSegment& segment : front.segments())
+    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
+        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
+      fronts.push_back(&segment);
+  return fronts;
+}
+
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out) {
   const CutSurface* cut = surface_of(em, k);
   if (!cut || classes_of(em, k)[static_cast<std::size_t>(t)] == 0 || em.plain(t)) return;
@@ -125,16 +140,7 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
   for (int a = 0; a < 4; ++a)
     for (int b = a + 1; b < 4; ++b) h = std::max(h, (p[a] - p[b]).norm());
   const double tolerance = 1e-12 * h;
-  Eigen::Vector3d lo = p[0], hi = p[0];
-  for (const auto& x : p) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  std::vector<const FrontSegment*> fronts;
-  for (const FrontSegment& segment : front.segments())
-    if ((segment.p0.cwiseMin(segment.p1).array() <= hi.array() + tolerance).all() &&
-        (segment.p0.cwiseMax(segment.p1).array() >= lo.array() - tolerance).all())
-      fronts.push_back(&segment);
+  const std::vector<const FrontSegment*> fronts = fronts_near(front, p, tolerance);
   const int n = std::max(order, 2);
   const int depth = std::max(0, order - 3);
   std::vector<double> nodes, weights;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <array>
 #include <Eigen/Dense>
 #include <vector>
 
@@ -25,6 +26,11 @@ double segment_length_in_polygon(const Eigen::Vector3d& p, const Eigen::Vector3d
 void polygon_gauss_rule(const Polygon& poly, const Eigen::Vector3d& apex, int depth,
                         const std::vector<const FrontSegment*>& fronts, const std::vector<double>& nodes,
                         const std::vector<double>& weights, std::vector<Eigen::Vector3d>& x, std::vector<double>& w);
+
+/// The segments of `front` whose bounding boxes meet the tet's (its corners') grown by `tolerance`:
+/// the ones a rule in that tet must know about.
+std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std::array<Eigen::Vector3d, 4>& corners,
+                                             double tolerance);
 
 /// Where the branch functions are singular in the polygon: a front segment piercing its inside
 /// (that point), else a corner on the front (the first found), else its first corner.
