@@ -402,7 +402,6 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
       for (int c = 0; c < 3; ++c) x(k, c) = deformed.points(k, c) + o.scale * u(k, c);
     outlined = add_region_outlines(region_layer, deformed, x, view.eye, section ? plane.Get() : nullptr, majority);
   }
-  std::string region_caption;
   if (!outlined.empty()) {
     region_layer->SetLayer(1);
     region_layer->SetViewport(0.0, 0.1, 0.82, 1.0);
@@ -417,7 +416,6 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
       label->GetTextProperty()->SetColor(0.8 * colour[0], 0.8 * colour[1], 0.8 * colour[2]);
       label->GetTextProperty()->BoldOn();
       renderer->AddActor2D(label);
-      region_caption += std::string(i == 0 ? "" : ", ") + region_name(deformed, outlined[i]) + " " + kRegionColourNames[i % 4];
     }
   }
 
@@ -469,7 +467,6 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   caption += "colour: von Mises stress" + model + (model.empty() ? ", " : ",\n") + "0 to " + pascals(top) + (o.colour_max > 0 ? std::string(" (fixed for the series; above: yellow)")
                                                                    : std::string(" (95th percentile of the cells; above: yellow)"));
   if (view.has_cut) caption += ", wound faces red";
-  if (!region_caption.empty()) caption += "; regions outlined through the body: " + region_caption;
   if (section) caption += "\nsection through the cut's centre, the half towards the viewer removed";
   caption += "\ndisplacements x " + format("%g", o.scale) + ", max |u| = " +
              format("%.3g m", [&] {
