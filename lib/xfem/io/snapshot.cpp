@@ -39,6 +39,8 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/core/regions.h"
+#include "xfem/io/region_boundary.h"
 
 namespace xfem {
 namespace {
@@ -99,6 +101,81 @@ Ptr<vtkLookupTable> viridis(double top) {
 
 // The wound's own colour: a red no viridis entry comes near.
 constexpr double kWoundColour[3] = {0.85, 0.2, 0.25};
+
+// Outline colours of the regions other than the largest, in ascending id order (cycled): far from
+// viridis and from the wound's red.
+constexpr double kRegionColours[4][3] = {{1.0, 0.5, 0.0}, {0.9, 0.1, 0.75}, {0.1, 0.8, 1.0}, {0.55, 0.35, 0.1}};
+const char* const kRegionColourNames[4] = {"orange", "magenta", "cyan", "brown"};
+
+// The name of region r for the legend: its name in the mesh, or "region r".
+std::string region_name(const TetMesh& mesh, int r) {
+  const auto it = mesh.region_names.find(r);
+  return it != mesh.region_names.end() ? it->second : "region " + std::to_string(r);
+}
+
+// The regions other than the largest, drawn over the opaque body in a layer of their own (so an
+// inclusion inside the body shows through it): each region's boundary faces see-through in its
+// colour and its outline (silhouette and open borders, seen from `eye`) as opaque lines. Clipped
+// by `plane` when `plane` is given (a section). Returns the regions drawn, ascending, and sets
+// `majority` to the largest region (not drawn).
+std::vector<int> add_region_outlines(vtkRenderer* layer, const TetMesh& mesh, const Points& x,
+                                     const Eigen::Vector3d& eye, vtkPlane* plane, int& majority) {
+  const RegionBoundary boundary = region_boundary(mesh);
+  majority = boundary.majority;
+  std::vector<int> drawn(boundary.region.begin(), boundary.region.end());
+  std::sort(drawn.begin(), drawn.end());
+  drawn.erase(std::unique(drawn.begin(), drawn.end()), drawn.end());
+  auto points = Ptr<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(x.rows());
+  for (Eigen::Index k = 0; k < x.rows(); ++k) points->SetPoint(k, x(k, 0), x(k, 1), x(k, 2));
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    const double* colour = kRegionColours[i % 4];
+    Triangles tris(std::count(boundary.region.begin(), boundary.region.end(), drawn[i]), 3);
+    auto polys = Ptr<vtkCellArray>::New();
+    for (Eigen::Index f = 0, n = 0; f < boundary.triangles.rows(); ++f) {
+      if (boundary.region[f] != drawn[i]) continue;
+      tris.row(n++) = boundary.triangles.row(f);
+      const vtkIdType ids[3] = {boundary.triangles(f, 0), boundary.triangles(f, 1), boundary.triangles(f, 2)};
+      polys->InsertNextCell(3, ids);
+    }
+    auto lines = Ptr<vtkCellArray>::New();
+    for (const auto& e : outline_edges(x, tris, eye)) {
+      const vtkIdType ids[2] = {e[0], e[1]};
+      lines->InsertNextCell(2, ids);
+    }
+    for (const bool fill : {true, false}) {
+      auto poly = Ptr<vtkPolyData>::New();
+      poly->SetPoints(points);
+      if (fill) poly->SetPolys(polys);
+      else poly->SetLines(lines);
+      auto mapper = Ptr<vtkPolyDataMapper>::New();
+      auto clip = Ptr<vtkClipPolyData>::New();
+      if (plane) {
+        clip->SetInputData(poly);
+        clip->SetClipFunction(plane);
+        clip->InsideOutOn();
+        mapper->SetInputConnection(clip->GetOutputPort());
+      } else {
+        mapper->SetInputData(poly);
+      }
+      mapper->ScalarVisibilityOff();
+      auto actor = Ptr<vtkActor>::New();
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+      if (fill) {
+        actor->GetProperty()->SetOpacity(0.35);
+        actor->GetProperty()->SetAmbient(0.5);
+        actor->GetProperty()->SetDiffuse(0.6);
+      } else {
+        actor->GetProperty()->SetLineWidth(2.5);
+        actor->GetProperty()->LightingOff();
+      }
+      layer->AddActor(actor);
+    }
+  }
+  return drawn;
+}
 
 }  // namespace
 
@@ -313,6 +390,35 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   camera->SetParallelScale(1.05 * std::max(half_height, half_width / aspect));
   renderer->ResetCameraClippingRange();
 
+  // 3b. Several regions (an inclusion inside an organ): the regions other than the largest are
+  // outlined in a layer over the body, with the same camera, and named in a legend. One region:
+  // nothing is added, the picture is the same as without regions.
+  auto region_layer = Ptr<vtkRenderer>::New();
+  std::vector<int> outlined;
+  int majority = 0;
+  if (region_ids(deformed).size() > 1) {
+    Points x(np, 3);
+    for (Eigen::Index k = 0; k < np; ++k)
+      for (int c = 0; c < 3; ++c) x(k, c) = deformed.points(k, c) + o.scale * u(k, c);
+    outlined = add_region_outlines(region_layer, deformed, x, view.eye, section ? plane.Get() : nullptr, majority);
+  }
+  if (!outlined.empty()) {
+    region_layer->SetLayer(1);
+    region_layer->SetViewport(0.0, 0.1, 0.82, 1.0);
+    region_layer->SetActiveCamera(camera);
+    const int legend_font = std::max(12, o.height / 45);
+    auto body_label = text(region_name(deformed, majority) + ": stress colours", 0.02, 0.95, legend_font, VTK_TEXT_LEFT);
+    renderer->AddActor2D(body_label);
+    for (std::size_t i = 0; i < outlined.size(); ++i) {
+      const double* colour = kRegionColours[i % 4];
+      auto label = text(region_name(deformed, outlined[i]) + ": " + kRegionColourNames[i % 4] + " outline, seen through",
+                        0.02, 0.95 - 0.045 * (i + 1), legend_font, VTK_TEXT_LEFT);
+      label->GetTextProperty()->SetColor(0.8 * colour[0], 0.8 * colour[1], 0.8 * colour[2]);
+      label->GetTextProperty()->BoldOn();
+      renderer->AddActor2D(label);
+    }
+  }
+
   // 4. Colour bar (a strip of quads in normalized viewport coordinates) and captions.
   auto overlay = Ptr<vtkRenderer>::New();
   overlay->SetViewport(0.82, 0.0, 1.0, 1.0);
@@ -386,6 +492,10 @@ void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const st
   window->AddRenderer(renderer);
   window->AddRenderer(overlay);
   window->AddRenderer(caption_strip);
+  if (!outlined.empty()) {
+    window->SetNumberOfLayers(2);
+    window->AddRenderer(region_layer);
+  }
   window->Render();
   auto image = Ptr<vtkWindowToImageFilter>::New();
   image->SetInput(window);

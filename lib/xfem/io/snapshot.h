@@ -67,7 +67,10 @@ double colour_top(const TetMesh& deformed);
 /// what is drawn, the world's z (or y, if z is the view direction) up on the screen, scaled so
 /// that the drawn bounding box fits with a 5 % margin. An interior cut is shown by a section:
 /// the body and wound are clipped by the plane through the cut's centre with normal `opening`
-/// (containing the cut's normal), the half towards the eye removed. Needs an X display (run under
+/// (containing the cut's normal), the half towards the eye removed. A body of several regions
+/// (cell array `region`): every region but the largest is outlined over the body in its own colour
+/// (region_boundary: see-through faces and silhouette), named in a legend; one region draws
+/// nothing more. Needs an X display (run under
 /// `xvfb-run -a`): throws xfem::Error when DISPLAY is unset, or when the arrays are missing.
 /// Pixels may differ between GPUs and drivers.
 void write_snapshot(const TetMesh& deformed, const TriangleMesh& wound, const std::string& png,
