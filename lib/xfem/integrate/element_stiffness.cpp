@@ -7,13 +7,6 @@
 
 namespace xfem {
 
-Lame lame(double E, double nu) {
-  Lame m;
-  m.lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  m.mu = E / (2.0 * (1.0 + nu));
-  return m;
-}
-
 Eigen::Matrix<double, 12, 12> tet_stiffness(const TetShape& shape, const Lame& material) {
   const double v = std::abs(shape.volume);
   const double mu = material.mu * v, la = material.lambda * v;
