@@ -89,9 +89,10 @@ TEST_CASE("materials: bad entries are one-line errors naming the item", "[materi
       {R"([{"region": "a", "E": 1, "nu": 0.3}, {"region": "a", "E": 2, "nu": 0.3}])",
        "p.json: materials[1].region lists region \"a\" again (materials[0] gives its material)"},
   };
-  for (const auto& [materials, message] : cases) {
+  for (const auto& c : cases) {
+    const std::string& materials = c.first;  // named: a lambda captures it (not a structured binding)
     INFO(materials);
-    CHECK(error_of([&] { parse(materials); }) == message);
+    CHECK(error_of([&] { parse(materials); }) == c.second);
   }
 }
 
