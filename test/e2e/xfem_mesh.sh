@@ -5,15 +5,7 @@ M="$XFEM_BIN/xfem-mesh"
 S="$XFEM_SCRATCH"
 rm -rf "$S" && mkdir -p "$S" && cd "$S" || exit 1
 fail=0
-check() {  # check <expected exit code> <description> <command...>
-  local want=$1 what=$2
-  shift 2
-  "$@" >out.txt 2>err.txt
-  local rc=$?
-  if [ "$rc" != "$want" ]; then
-    echo "FAIL: $what: exit $rc, expected $want"; cat err.txt; fail=1
-  fi
-}
+source "$XFEM_SOURCE/test/e2e/check_exit.bash"
 expect_error() {  # expect_error <description> <output file> <command...>: exit 1, 'error:', no file
   local what=$1 file=$2
   shift 2

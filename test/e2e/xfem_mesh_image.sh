@@ -8,15 +8,7 @@ M="$B/xfem-mesh"
 S="$XFEM_SCRATCH"
 rm -rf "$S" && mkdir -p "$S" && cd "$S" || exit 1
 fail=0
-check() {  # check <expected exit code> <description> <command...>
-  local want=$1 what=$2
-  shift 2
-  "$@" >out.txt 2>err.txt
-  local rc=$?
-  if [ "$rc" != "$want" ]; then
-    echo "FAIL: $what: exit $rc, expected $want"; cat err.txt; fail=1
-  fi
-}
+source "$XFEM_SOURCE/test/e2e/check_exit.bash"
 expect_error() {  # expect_error <description> <text> <command...>: exit 1, one 'error:' line with <text>, no body.vtu
   local what=$1 text=$2
   shift 2

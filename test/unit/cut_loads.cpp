@@ -108,14 +108,7 @@ TEST_CASE("cut loads: the face rule covers the cut's area, and a pressure does t
 
 TEST_CASE("cut loads: the basis jumps by N_l for a sign DOF and 2 sqrt(r) N_l for the first branch function",
           "[cut_loads]") {
-  xfem::EnrichedMesh em = xfem_test::all_branch(xfem::box_mesh({4, 4, 4}, {0, 0, 0}, {1, 1, 1}));
-  xfem::TriangleMesh cut;
-  cut.points.resize(4, 3);
-  cut.points << -1, -1, 0.5, 0.45, -1, 0.5, 0.45, 2, 0.5, -1, 2, 0.5;
-  cut.triangles.resize(2, 3);
-  cut.triangles << 0, 1, 2, 0, 2, 3;
-  em.cut = std::make_shared<xfem::CutSurface>(cut);
-  em.front = xfem::CrackFront({xfem::FrontSegment{{0.45, 2.0, 0.5}, {0.45, -1.0, 0.5}, {0, 0, 1}}});
+  xfem::EnrichedMesh em = xfem_test::front_inside_box();
   em.cut_class.assign(static_cast<std::size_t>(em.tets()), 1);
   const std::vector<xfem::CutFacePoint> points = xfem::cut_face_points(em, 0, 4);
   double area = 0;

@@ -117,4 +117,18 @@ inline std::vector<int> split_regions(xfem::TetMesh& mesh, int axis, double at, 
   return region;
 }
 
+/// The unit box of 4^3 cubes, every node branch enriched, cut by the half-plane z = 0.5, x <= 0.45:
+/// the front x = 0.45 runs through the middle of a layer of elements.
+inline xfem::EnrichedMesh front_inside_box() {
+  xfem::EnrichedMesh em = all_branch(xfem::box_mesh({4, 4, 4}, {0, 0, 0}, {1, 1, 1}));
+  xfem::TriangleMesh cut;
+  cut.points.resize(4, 3);
+  cut.points << -1, -1, 0.5, 0.45, -1, 0.5, 0.45, 2, 0.5, -1, 2, 0.5;
+  cut.triangles.resize(2, 3);
+  cut.triangles << 0, 1, 2, 0, 2, 3;
+  em.cut = std::make_shared<xfem::CutSurface>(cut);
+  em.front = xfem::CrackFront({xfem::FrontSegment{{0.45, 2.0, 0.5}, {0.45, -1.0, 0.5}, {0, 0, 1}}});
+  return em;
+}
+
 }  // namespace xfem_test

@@ -294,17 +294,23 @@ TEST_CASE("gmsh: an entity mixing orders of one shape is one error line and neve
                     Contains(separate + ": the mesh has Tetrahedron 10 (gmsh element type 11) elements; only linear"));
 }
 
+namespace {
+
+/// The error reading `text` as the file `name` gives, or "read" when it is read.
+std::string refused(const std::string& name, const std::string& text) {
+  const std::string path = scratch(name);
+  write_text(path, text);
+  try {
+    xfem::read_tet_mesh(path);
+  } catch (const xfem::Error& e) {
+    return std::string(e.what());
+  }
+  return std::string("read");
+}
+
+}  // namespace
+
 TEST_CASE("gmsh: the element sections are checked before gmsh reads them", "[gmsh]") {
-  const auto refused = [](const std::string& name, const std::string& text) {
-    const std::string path = scratch(name);
-    write_text(path, text);
-    try {
-      xfem::read_tet_mesh(path);
-    } catch (const xfem::Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("read");
-  };
   std::string text = msh22(4, 4, 0, 0);
   text.replace(text.find("1 4 2 0 1"), 9, "1 999 2 0 1");
   CHECK(refused("type999.msh", text) == scratch("type999.msh") + ": element type 999 is not a gmsh element type");
@@ -475,16 +481,6 @@ TEST_CASE("gmsh: the $Nodes section is checked before gmsh reads it", "[gmsh]") 
   // $Nodes of MSH 4.1 binary: 4 size_t (blocks, nodes, min tag, max tag), then a block: 3 int32
   // (dim, entity, parametric) and a size_t (count), its 35 tags (size_t), their coordinates.
   const std::size_t first_tag = 4 * 8 + 3 * 4 + 8;
-  const auto refused = [](const std::string& name, const std::string& text) {
-    const std::string path = scratch(name);
-    write_text(path, text);
-    try {
-      xfem::read_tet_mesh(path);
-    } catch (const xfem::Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("read");
-  };
   // A node tag beyond the header's largest: libgmsh wrote out of bounds (SIGSEGV).
   CHECK(refused("tag_high.msh", patched_msh41("$Nodes\n", first_tag + 34 * 8, 1000000)) ==
         scratch("tag_high.msh") + ": node tag 1000000 in the $Nodes section is outside the range 1 to 35 its header gives");
