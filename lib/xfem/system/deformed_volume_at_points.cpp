@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#include "xfem/system/deformed_volume_at_points.h"
+
+namespace xfem {
+
+PointVolume deformed_volume_at_points(const EnrichedMesh& em, const BodyIntegration& body, const Eigen::VectorXd& u) {
+  PointVolume v;
+  Eigen::VectorXd ue;
+  for (int t = 0; t < em.tets(); ++t) {
+    const ElementPoints& points = body.tets[static_cast<std::size_t>(t)];
+    const long base = em.offsets[t];
+    ue.resize(3 * em.size(t));
+    for (int c = 0; c < em.size(t); ++c) ue.segment<3>(3 * c) = u.segment<3>(3 * em.dofs[base + c]);
+    PointVolume::Part& kind = em.plain(t) ? v.plain : em.branch(t) ? v.branch : v.sign;
+    const double tet_volume = points.weight.sum();
+    double before = 0.0, after = 0.0;
+    for (int p = 0; p < points.size(); ++p) {
+      const double J = deformation_gradient(points, p, ue).determinant();
+      before += points.weight[p];
+      after += points.weight[p] * J;
+      // The points next to a front (element_forces.h) carry no volume worth naming as "largest".
+      if (points.weight[p] >= next_to_front_weight * tet_volume && (v.max_J_tet < 0 || J > v.max_J)) {
+        v.max_J = J;
+        v.max_J_tet = t;
+      }
+    }
+    for (PointVolume::Part* part : {&kind, &v.body}) {
+      ++part->tets;
+      part->before += before;
+      part->after += after;
+    }
+  }
+  if (v.max_J_tet >= 0)
+    for (int k = 0; k < 4; ++k) v.max_J_at += em.mesh.points.row(em.mesh.tets(v.max_J_tet, k)).transpose() / 4.0;
+  return v;
+}
+
+}  // namespace xfem
