@@ -47,11 +47,13 @@ v = r['volume']
 m = re.search(r'volume (\S+) m\^3 -> (\S+) m\^3', open(vis).read())
 vtu = float(m.group(2)) / float(m.group(1)) - 1
 pct = lambda x: f"{100 * x:+.3f}%"
-c = v['max_det_F_centroid']
+c, b = v['body']['max_det_F_centroid'], v['body']
 print(f"{size:<6} {v['body']['tets']:<7} {nu:<5} {r['newton_iterations']:<10} {pct(vtu):<12} "
       f"{pct(v['body']['relative_change']):<12} {pct(v['plain_tets']['relative_change']):<8} "
       f"{pct(v['sign_tets']['relative_change']):<8} {pct(v['branch_tets']['relative_change']):<8} "
-      f"{v['max_det_F']:.4f} (tet {v['max_det_F_tet']} at {c[0]:.4f} {c[1]:.4f} {c[2]:.4f})")
+      f"{b['max_det_F']:.4f} (tet {b['max_det_F_tet']} at {c[0]:.4f} {c[1]:.4f} {c[2]:.4f})")
+p = v['plain_tets']; cp = p['max_det_F_centroid']
+print(f"       largest det F in a plain tet {p['max_det_F']:.4f} (at {cp[0]:.4f} {cp[1]:.4f} {cp[2]:.4f}), in a sign-enriched tet {v['sign_tets']['max_det_F']:.4f}")
 print(f"       volume shares: plain {v['plain_tets']['before'] / v['body']['before']:.4f}, sign {v['sign_tets']['before'] / v['body']['before']:.4f}, branch {v['branch_tets']['before'] / v['body']['before']:.4f}; excess (m^3) plain {v['plain_tets']['after'] - v['plain_tets']['before']:.3e}, sign {v['sign_tets']['after'] - v['sign_tets']['before']:.3e}, branch {v['branch_tets']['after'] - v['branch_tets']['before']:.3e}")
 PY
   done

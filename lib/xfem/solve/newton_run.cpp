@@ -111,18 +111,18 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
             cli::three_digits(volume.body.after) + " m^3 (" + cli::three_digits(100 * change(volume.body)) +
             " %; plain tets " + cli::three_digits(100 * change(volume.plain)) + " %, sign-enriched " +
             cli::three_digits(100 * change(volume.sign)) + " %, branch-enriched " +
-            cli::three_digits(100 * change(volume.branch)) + " %); largest det F " + cli::three_digits(volume.max_J) +
-            " in tet " + std::to_string(volume.max_J_tet));
+            cli::three_digits(100 * change(volume.branch)) + " %); largest det F " + cli::three_digits(volume.body.max_J) +
+            " in tet " + std::to_string(volume.body.max_J_tet) + ", in a plain tet " +
+            cli::three_digits(volume.plain.max_J));
   const auto part_json = [&](const PointVolume::Part& p) {
-    return Json{{"tets", p.tets}, {"before", p.before}, {"after", p.after}, {"relative_change", change(p)}};
+    return Json{{"tets", p.tets}, {"before", p.before}, {"after", p.after}, {"relative_change", change(p)},
+                {"max_det_F", p.max_J}, {"max_det_F_tet", p.max_J_tet},
+                {"max_det_F_centroid", {p.max_J_at.x(), p.max_J_at.y(), p.max_J_at.z()}}};
   };
   report["volume"] = {{"body", part_json(volume.body)},
                       {"plain_tets", part_json(volume.plain)},
                       {"sign_tets", part_json(volume.sign)},
-                      {"branch_tets", part_json(volume.branch)},
-                      {"max_det_F", volume.max_J},
-                      {"max_det_F_tet", volume.max_J_tet},
-                      {"max_det_F_centroid", {volume.max_J_at.x(), volume.max_J_at.y(), volume.max_J_at.z()}}};
+                      {"branch_tets", part_json(volume.branch)}};
   report["backend"] = run.backend;
   report["processes"] = run.processes;
   report["n"] = em.n;

@@ -17,11 +17,13 @@ struct PointVolume {
     long tets = 0;
     double before = 0.0;  ///< m^3, sum of w_p
     double after = 0.0;   ///< m^3, sum of w_p det F_p
+    /// The largest det F of a point carrying volume (next_to_front_weight of its tet's or more),
+    /// its tet (-1: no tet) and that tet's centroid (reference configuration).
+    double max_J = 0.0;
+    int max_J_tet = -1;
+    Eigen::Vector3d max_J_at = Eigen::Vector3d::Zero();
   };
   Part body, plain, sign, branch;  ///< every tet; tets with original DOFs only; with sign DOFs only; with branch DOFs
-  double max_J = 0.0;              ///< the largest det F of a point carrying volume (next_to_front_weight or more)
-  int max_J_tet = -1;              ///< its tet
-  Eigen::Vector3d max_J_at = Eigen::Vector3d::Zero();  ///< its tet's centroid (reference configuration)
 };
 
 /// The volumes at u (3N) on the points of `body` (integrate_body).
