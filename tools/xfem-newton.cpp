@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       "JSON report with every load step's residual history (docs/FORMATS.md).",
       "xfem-newton out/enriched.vtu --cut cut.vtp --problem problem.json -o out/u.mtx --report out/newton.json\n"
       "  xfem-newton out/enriched.vtu --cut cut.vtp --problem problem.json -o out/u.mtx --backend petsc --np 2");
-  std::string input, problem_path, backend = "auto";
+  std::string input, problem_path, backend = "cholmod";
   int processes = 0;
   xfem::PetscSolveOptions cg;
   std::vector<std::string> cut_paths;
@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-iterations", run.max_iterations, "Newton iterations per load step before it is halved "
                                                          "(default 25)")
       ->check(xfem::cli::range(1, 1000));
-  app.add_option("--backend", backend, "the linear solves: auto (default: as xfem-solve, cholmod below " +
-                                            std::to_string(xfem::kPetscFromDofsEnriched) + " DOFs with enriched DOFs, " +
-                                            std::to_string(xfem::kPetscFromDofs) + " without, else petsc), cholmod or "
-                                            "petsc (CG + GAMG, on --np processes)")
+  app.add_option("--backend", backend, "the linear solves: cholmod (default; one analysis, a factorization per "
+                                       "iteration), petsc (CG + GAMG, on --np processes) or auto (as xfem-solve: petsc from " +
+                                       std::to_string(xfem::kPetscFromDofsEnriched) + " DOFs with enriched DOFs, " +
+                                       std::to_string(xfem::kPetscFromDofs) + " without)")
       ->check(CLI::IsMember({"auto", "cholmod", "petsc"}));
   app.add_option("--np", processes, "PETSc: MPI processes; xfem-newton starts itself under mpirun for more than 1 "
                                     "(default: 1 per " + std::to_string(xfem::kDofsPerProcess) +

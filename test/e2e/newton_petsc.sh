@@ -87,6 +87,11 @@ fi
 if command -v mpirun >/dev/null; then
   run -q -o u_p2.mtx --reactions r_p2.mtx --report p2.json --backend petsc --np 2 || fail "petsc 2"
   compare "PETSc, 2 processes" p2 2
+  # Under the user's own mpirun: each rank becomes xfem-newton-petsc, the same answer.
+  rm -f u_p3.mtx r_p3.mtx p3.json
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$NEWTON" -q enriched.vtu --cut cut.vtp --problem nh.json \
+    -o u_p3.mtx --reactions r_p3.mtx --report p3.json --backend petsc || fail "petsc under mpirun"
+  compare "PETSc under the user's mpirun, 2 processes" p3 2
   # Ranks that cannot reach each other (only the "self" transport): one line, exit 1.
   expect_error "btl=self" "mpirun -np 2 xfem-newton-petsc failed" OMPI_MCA_btl=self -- --backend petsc --np 2
   # A failure every rank meets alike (Newton gives up: one iteration per step, the beam squashed):
