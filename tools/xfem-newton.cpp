@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The large-deformation solve: reads what xfem-assemble reads, writes what xfem-solve writes.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -7,8 +11,18 @@
 #include "xfem/core/error.h"
 #include "xfem/core/version.h"
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/solve/backend_launch.h"
 #include "xfem/solve/newton_run.h"
+#include "xfem/solve/petsc_solver.h"
 #include "xfem/system/problem.h"
+
+// The PETSc backend is this program built with PETSc, xfem-newton-petsc (backend_launch.h).
+#ifndef XFEM_NEWTON_LINKS_PETSC
+#define XFEM_NEWTON_LINKS_PETSC 0
+#endif
+#if XFEM_NEWTON_LINKS_PETSC
+#include "xfem/solve/newton_petsc.h"
+#endif
 
 int main(int argc, char** argv) {
   auto tool = xfem::cli::make_tool(
@@ -16,12 +30,17 @@ int main(int argc, char** argv) {
       "Solve the elastic problem of problem.json at large deformation: total Lagrangian, the material of\n"
       "material.model (linear, corotational or neo-hookean; docs/METHOD.md \"Material models\"), each side of a\n"
       "cut deforming on its own, Newton's method with a line search that refuses inverted elements, in\n"
-      "load_steps load steps (halved when Newton fails), CHOLMOD with one analysis for every factorization.\n"
+      "load_steps load steps (halved when Newton fails). The linear solves on xfem-solve's backends: CHOLMOD with one\n"
+      "analysis for every factorization, or PETSc CG + GAMG on --np MPI processes (mpirun, started by itself; every\n"
+      "process assembles the whole tangent, the solves are distributed; the program xfem-newton-petsc next to this one).\n"
       "Reads what xfem-assemble reads and writes what xfem-solve writes: u.mtx with the fingerprints of mesh,\n"
       "cuts and problem (xfem-visualize, xfem-probe and xfem-rmserror take it unchanged), the reactions and a\n"
       "JSON report with every load step's residual history (docs/FORMATS.md).",
-      "xfem-newton out/enriched.vtu --cut cut.vtp --problem problem.json -o out/u.mtx --report out/newton.json");
-  std::string input, problem_path;
+      "xfem-newton out/enriched.vtu --cut cut.vtp --problem problem.json -o out/u.mtx --report out/newton.json\n"
+      "  xfem-newton out/enriched.vtu --cut cut.vtp --problem problem.json -o out/u.mtx --backend petsc --np 2");
+  std::string input, problem_path, backend = "cholmod";
+  int processes = 0;
+  xfem::PetscSolveOptions cg;
   std::vector<std::string> cut_paths;
   xfem::NewtonRun run;
   auto& app = tool->app;
@@ -40,9 +59,24 @@ int main(int argc, char** argv) {
   app.add_option("--max-iterations", run.max_iterations, "Newton iterations per load step before it is halved "
                                                          "(default 25)")
       ->check(xfem::cli::range(1, 1000));
+  app.add_option("--backend", backend, "the linear solves: cholmod (default; one analysis, a factorization per "
+                                       "iteration), petsc (CG + GAMG, on --np processes) or auto (as xfem-solve: petsc from " +
+                                       std::to_string(xfem::kPetscFromDofsEnriched) + " DOFs with enriched DOFs, " +
+                                       std::to_string(xfem::kPetscFromDofs) + " without)")
+      ->check(CLI::IsMember({"auto", "cholmod", "petsc"}));
+  app.add_option("--np", processes, "PETSc: MPI processes; xfem-newton starts itself under mpirun for more than 1 "
+                                    "(default: 1 per " + std::to_string(xfem::kDofsPerProcess) +
+                                    " DOFs, at most the number of cores). Under mpirun: ignored")
+      ->check(CLI::Range(1, 1024));
+  app.add_option("--cg-rtol", cg.rtol, "PETSc: each linear solve's relative residual (default 1e-10; Newton's own "
+                                       "--rtol decides convergence)")
+      ->check(xfem::cli::range(1e-15, 1e-2));
   app.add_option("--ordering", run.ordering, "CHOLMOD's fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   xfem::cli::add_threads_option(*tool);
+#if XFEM_NEWTON_LINKS_PETSC
+  std::unique_ptr<xfem::PetscSession> mpi;  // outlives cli::run: rank 0 prints a failure before MPI ends
+#endif
   return xfem::cli::run(*tool, argc, argv, [&] {
     xfem::cli::check_output(run.output, {".mtx"}, true);
     if (!run.reactions_path.empty()) xfem::cli::check_output(run.reactions_path, {".mtx"}, true);
@@ -54,6 +88,29 @@ int main(int argc, char** argv) {
     // Each tet's law (problem.json `materials`, checked against the mesh's regions); none: one law.
     const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
     if (!materials.of_tet.empty()) run.materials = &materials;
+    // PETSc: restarted under mpirun (or as xfem-newton-petsc) here, after the input's checks.
+    run.backend = xfem::launch_program_backend(backend, 3 * em.n, em.n > em.np, processes, XFEM_NEWTON_LINKS_PETSC,
+                                               "xfem-newton-petsc", "xfem-newton: ", argc, argv, run.output);
+#if XFEM_NEWTON_LINKS_PETSC
+    std::unique_ptr<xfem::TangentSolver> solver;
+    if (run.backend == "petsc") {
+      mpi = std::make_unique<xfem::PetscSession>();
+      run.root = mpi->rank() == 0;
+      run.processes = mpi->size();
+      // Every rank fails alike (the same data, the same decisions): rank 0 alone reports (-v: all).
+      if (!run.root && !tool->verbose) {
+        const int null = ::open("/dev/null", O_WRONLY);
+        if (null >= 0) ::dup2(null, 2), ::close(null);
+      }
+      if (tool->verbose && run.root)
+        cg.monitor = [](long it, double norm) {
+          xfem::cli::detail("  CG iteration " + std::to_string(it) + ": residual " + xfem::cli::three_digits(norm) + " N");
+        };
+      solver = xfem::petsc_tangent_solver(em, cg);
+      run.solver = solver.get();
+      if (run.root) xfem::cli::info("linear solves: PETSc CG on " + std::to_string(run.processes) + " process(es)");
+    }
+#endif
     xfem::Json report;
     report["generator"] = std::string("xfem-newton ") + xfem::version;
     report["problem"] = problem_path;

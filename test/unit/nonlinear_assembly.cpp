@@ -18,6 +18,7 @@
 #include "xfem/solve/cholmod_solver.h"
 #include "xfem/solve/newton.h"
 #include "xfem/system/assembly.h"
+#include "xfem/system/deformed_volume_at_points.h"
 #include "xfem/system/dirichlet.h"
 #include "enriched_test_meshes.h"
 
@@ -362,4 +363,43 @@ TEST_CASE("newton: a cut opened wide (lifted 2 m and slid 1 m at its top) conver
   }
   CHECK(iterations <= 28);
   CHECK(result.min_J > 0);
+}
+
+TEST_CASE("deformed volume at points: affine maps give det F per kind of tet, branch DOFs move only their tets",
+          "[nonlinear]") {
+  // [0,2] x [0,1] x [0,2] cut at z = 0.93 up to x = 1.3: sign-only tets far from the front too.
+  const xfem::TetMesh mesh = xfem::box_mesh({8, 2, 4}, {0, 0, 0}, {2, 1, 2});
+  const auto cut = std::make_shared<xfem::CutSurface>(
+      xfem::cut_parallelogram({-0.2, -0.2, 0.93}, {1.3, -0.2, 0.93}, {-0.2, 1.2, 0.93}, {3, 3}));
+  const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
+  const xfem::BodyIntegration body = xfem::integrate_body(em, 3);
+  Eigen::Matrix3d F;
+  F << 1.3, 0.2, 0.0, -0.1, 0.9, 0.15, 0.05, 0.0, 1.1;
+  const Eigen::VectorXd u = nodal(em, [&](const V& X) { return V((F - Eigen::Matrix3d::Identity()) * X); });
+  const xfem::PointVolume v = xfem::deformed_volume_at_points(em, body, u);
+  CHECK(v.body.before == Approx(4.0).epsilon(1e-12));
+  CHECK(v.body.tets == em.tets());
+  CHECK(v.plain.tets + v.sign.tets + v.branch.tets == em.tets());
+  CHECK(v.plain.tets > 0);
+  CHECK(v.sign.tets > 0);
+  CHECK(v.branch.tets > 0);
+  CHECK(v.plain.before + v.sign.before + v.branch.before == Approx(v.body.before).epsilon(1e-12));
+  for (const xfem::PointVolume::Part* p : {&v.body, &v.plain, &v.sign, &v.branch}) {
+    CHECK(p->after == Approx(F.determinant() * p->before).epsilon(1e-12));
+    CHECK(p->max_J == Approx(F.determinant()).epsilon(1e-12));
+  }
+  // A rotation keeps the volume.
+  const Eigen::Matrix3d R = rotation(V(1, 2, 3), 70);
+  const xfem::PointVolume turned =
+      xfem::deformed_volume_at_points(em, body, nodal(em, [&](const V& X) { return V((R - Eigen::Matrix3d::Identity()) * X); }));
+  CHECK(turned.body.after == Approx(turned.body.before).epsilon(1e-12));
+  // Only the branch DOFs moved: the other tets keep their volume exactly, the branch tets' changes.
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * em.n);
+  w.tail(12 * em.nb) = random_vector(12 * em.nb, 0.02, 7);
+  const xfem::PointVolume b = xfem::deformed_volume_at_points(em, body, w);
+  CHECK(b.plain.after == b.plain.before);
+  CHECK(b.sign.after == Approx(b.sign.before).epsilon(1e-15));
+  CHECK(std::abs(b.branch.after - b.branch.before) > 1e-6 * b.branch.before);
+  CHECK(b.body.max_J_tet >= 0);
+  CHECK(em.branch(b.body.max_J_tet));
 }

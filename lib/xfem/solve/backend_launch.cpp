@@ -30,12 +30,12 @@ bool under_mpirun() {
   return false;
 }
 
-std::string petsc_program(const char* argv0, bool links_petsc) {
+std::string petsc_program(const char* argv0, bool links_petsc, const std::string& helper_name) {
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::filesystem::path me = ec ? std::filesystem::path(argv0) : self;
   if (links_petsc) return me.string();
-  const auto helper = me.parent_path() / "xfem-solve-petsc";
+  const auto helper = me.parent_path() / helper_name;
   if (!have_petsc || !std::filesystem::exists(helper))
     throw Error("the PETSc backend needs " + helper.string() + (have_petsc ? ", which is missing" :
                 ": this build has no PETSc (CMake did not find it)") +
@@ -85,15 +85,27 @@ struct FileStamp {
   }
 };
 
+// This process becomes `program` with the same arguments (execv); returns only by throwing.
+[[noreturn]] void become(const std::string& program, int argc, char** argv) {
+  const std::vector<std::string> args = command_line(program, 1, argc, argv);
+  std::vector<char*> cargs;
+  for (const auto& a : args) cargs.push_back(const_cast<char*>(a.c_str()));
+  cargs.push_back(nullptr);
+  std::fflush(stderr);
+  ::execv(program.c_str(), cargs.data());
+  throw Error("cannot start " + program + ": " + std::strerror(errno));
+}
+
 }  // namespace
 
-std::string run_program(const std::string& program, int processes, int argc, char** argv, const std::string& output) {
+std::string run_program(const std::string& program, int processes, int argc, char** argv, const std::string& output,
+                        const std::string& own_prefix) {
   const std::vector<std::string> args = command_line(program, processes, argc, argv);
   const std::string what = processes > 1 ? "mpirun -np " + std::to_string(processes) + " " +
                                                std::filesystem::path(program).filename().string()
                                          : program;
   const FileStamp before(output);
-  const WatchedRun run = run_watched(args, processes > 1, "xfem-solve: ");
+  const WatchedRun run = run_watched(args, processes > 1, own_prefix);
   if (!run.started) return run.exec_error;
   const bool written = output == "-" || (FileStamp(output).exists && !(FileStamp(output) == before));
   if (!run.signaled && run.status == 0 && written) {
@@ -146,18 +158,32 @@ std::string launch_backend(const std::string& dir, std::string backend, int proc
   // arguments; it decides again from the same files, so it comes to the same choice.
   if (!links_petsc && backend == "petsc") {
     const std::string program = petsc_program(argv[0], links_petsc);
-    if (mpi_child) {  // a rank of the user's mpirun: the PETSc program becomes this rank
-      const std::vector<std::string> args = command_line(program, 1, argc, argv);
-      std::vector<char*> cargs;
-      for (const auto& a : args) cargs.push_back(const_cast<char*>(a.c_str()));
-      cargs.push_back(nullptr);
-      std::fflush(stderr);
-      ::execv(program.c_str(), cargs.data());
-      throw Error("cannot start " + program + ": " + std::strerror(errno));
-    }
+    if (mpi_child) become(program, argc, argv);  // a rank of the user's mpirun: the PETSc program becomes this rank
     throw Error("cannot start " + program + ": " + run_program(program, 1, argc, argv, output));
   }
   return backend;
+}
+
+std::string launch_program_backend(std::string backend, long dofs, bool enriched, int processes, bool links_petsc,
+                                   const std::string& helper, const std::string& own_prefix, int argc, char** argv,
+                                   const std::string& output) {
+  const bool mpi_child = under_mpirun();
+  if (backend == "auto") backend = processes > 1 ? "petsc" : automatic_backend(dofs, enriched);
+  if (backend != "petsc") return backend;
+  if (!mpi_child) {
+    const int wanted = processes > 0 ? processes : automatic_processes(dofs, thread_limit());
+    if (wanted > 1) {
+      const std::string program = petsc_program(argv[0], links_petsc, helper);
+      cli::detail("starting " + std::to_string(wanted) + " PETSc processes under mpirun");
+      run_program(program, wanted, argc, argv, output, own_prefix);
+      cli::warn("cannot start mpirun (Open MPI's launcher not on PATH?): solving on 1 process");
+    }
+  }
+  if (links_petsc) return backend;
+  // One process (or one rank of a user's mpirun): the PETSc program takes over with the same arguments.
+  const std::string program = petsc_program(argv[0], links_petsc, helper);
+  if (mpi_child) become(program, argc, argv);
+  throw Error("cannot start " + program + ": " + run_program(program, 1, argc, argv, output, own_prefix));
 }
 
 }  // namespace xfem

@@ -22,7 +22,7 @@ struct StepContext {
   const std::vector<long>& fixed;
   std::vector<char> is_fixed;
   SparseMatrix K;  // the tangent, lower triangle, K's pattern
-  std::unique_ptr<CholeskyFactor>& factor;
+  TangentSolver& solver;
   NewtonResult& result;
   double force_floor;  // the smallest force scale: mu L^2 1e-6 (a strain of 1e-6 across the body)
   // The forces at `at_u` and, in K, the exact tangent there: computed together once per accepted
@@ -97,7 +97,7 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     // K_ff du_f = -(R_f + K_fc du_c), the same pattern every time: one analysis, many factorizations.
     // A tangent that is not positive definite (extreme strains next to a crack front, buckling) is
     // formed again with each point's tangent projected onto the positive semi-definite ones.
-    ReducedSystem reduced;
+    Eigen::VectorXd du;
     for (Tangent kind : {Tangent::Exact, Tangent::Projected}) {
       if (kind == Tangent::Projected) {
         double e_projected = 0.0;
@@ -108,34 +108,20 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
         ++step.projected;
         ++step.tangents;
       }
-      const auto clock = std::chrono::steady_clock::now();
       const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
-      reduced = eliminate_dirichlet(full, -R, fixed, change);
       try {
-        if (!c.factor) {
-          c.factor = std::make_unique<CholeskyFactor>(reduced.K, c.options.ordering == "amd" ? Ordering::Amd : Ordering::Metis);
-          c.result.analyze_seconds = c.factor->analyze_seconds;
-          step.factor_seconds -= c.factor->analyze_seconds;  // reported on its own
-        } else {
-          c.factor->refactor(reduced.K);
-        }
-        step.factor_seconds += seconds_since(clock);
-        ++step.factorizations;
+        du = c.solver.solve(full, -R, fixed, change, step);
         break;
-      } catch (const NotPositiveDefinite&) {
-        step.factor_seconds += seconds_since(clock);
-        ++step.factorizations;
+      } catch (const NotPositiveDefinite& e) {
         if (kind == Tangent::Projected) {  // not even the projected tangent: halve the step
-          step.failure = "the tangent stiffness is singular even projected (a rigid motion left free?)";
+          step.failure = e.column >= 0 ? "the tangent stiffness is singular even projected (a rigid motion left free?)"
+                                       : std::string("the projected tangent was not solved: ") + e.what();
           return false;
         }
       }
     }
     ++c.result.factorizations;
     auto clock = std::chrono::steady_clock::now();
-    const Eigen::VectorXd x = c.factor->solve(reduced.f);
-    const Eigen::VectorXd du = expand_solution(reduced, x, fixed, change);
-    step.solve_seconds += seconds_since(clock);
     // Line search: halve while a point inverts or the residual grows.
     const double before = norm_on(R, c.is_fixed, false);
     double alpha = 1.0;
@@ -177,7 +163,47 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
   return false;
 }
 
+// CHOLMOD: the Dirichlet DOFs eliminated, one symbolic analysis (at the first solve), a numeric
+// factorization per solve.
+class CholmodTangentSolver : public TangentSolver {
+ public:
+  explicit CholmodTangentSolver(Ordering ordering) : ordering_(ordering) {}
+  Eigen::VectorXd solve(const SparseMatrix& K, const Eigen::VectorXd& rhs, const std::vector<long>& fixed,
+                        const std::vector<double>& change, LoadStep& step) override {
+    auto clock = std::chrono::steady_clock::now();
+    const ReducedSystem reduced = eliminate_dirichlet(K, rhs, fixed, change);
+    try {
+      if (!factor_) {
+        factor_ = std::make_unique<CholeskyFactor>(reduced.K, ordering_);
+        analyze_seconds = factor_->analyze_seconds;
+        step.factor_seconds -= factor_->analyze_seconds;  // reported on its own
+      } else {
+        factor_->refactor(reduced.K);
+      }
+    } catch (const NotPositiveDefinite&) {
+      step.factor_seconds += seconds_since(clock);
+      ++step.factorizations;
+      throw;
+    }
+    step.factor_seconds += seconds_since(clock);
+    ++step.factorizations;
+    clock = std::chrono::steady_clock::now();
+    const Eigen::VectorXd x = factor_->solve(reduced.f);
+    Eigen::VectorXd du = expand_solution(reduced, x, fixed, change);
+    step.solve_seconds += seconds_since(clock);
+    return du;
+  }
+
+ private:
+  Ordering ordering_;
+  std::unique_ptr<CholeskyFactor> factor_;
+};
+
 }  // namespace
+
+std::unique_ptr<TangentSolver> cholmod_tangent_solver(const std::string& ordering) {
+  return std::make_unique<CholmodTangentSolver>(ordering == "amd" ? Ordering::Amd : Ordering::Metis);
+}
 
 NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& options) {
   const EnrichedMesh& em = *problem.em;
@@ -185,10 +211,12 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
   NewtonResult result;
   problem.dirichlet(1.0, result.fixed, result.fixed_values);
   std::vector<int> outer;
-  std::unique_ptr<CholeskyFactor> factor;
+  std::unique_ptr<TangentSolver> own_solver;
+  if (!options.solver) own_solver = cholmod_tangent_solver(options.ordering);
+  TangentSolver& solver = options.solver ? *options.solver : *own_solver;
   const double size = (em.mesh.points.colwise().maxCoeff() - em.mesh.points.colwise().minCoeff()).norm();
   StepContext context{problem, options, result.fixed, std::vector<char>(3 * em.n, 0),
-                      pattern_matrix(em, problem.body->pattern, outer), factor, result,
+                      pattern_matrix(em, problem.body->pattern, outer), solver, result,
                       std::max(1e-6 * problem.law.lame.mu * size * size, 1e-300)};
   for (long d : result.fixed) context.is_fixed[d] = 1;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * em.n);
@@ -208,8 +236,12 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
         options.info("load " + cli::three_digits(s) + ": " + std::to_string(attempt.iterations.size() - 1) +
                      " Newton iterations, relative residual " + cli::three_digits(attempt.final_residual) + "; " +
                      std::to_string(attempt.tangents) + " tangents in " + cli::three_digits(attempt.assemble_seconds) +
-                     " s, " + std::to_string(attempt.factorizations) + " factorizations in " +
-                     cli::three_digits(attempt.factor_seconds) + " s");
+                     " s, " + std::to_string(attempt.factorizations) +
+                     (attempt.linear_iterations ? " PETSc solves (" + std::to_string(attempt.linear_iterations) +
+                                                      " CG iterations) in " +
+                                                      cli::three_digits(attempt.factor_seconds + attempt.solve_seconds)
+                                                : " factorizations in " + cli::three_digits(attempt.factor_seconds)) +
+                     " s");
       continue;
     }
     if (step < full_step / std::pow(2.0, options.max_halvings) * 1.5)
@@ -220,6 +252,7 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
     if (options.info) options.info("load " + cli::three_digits(s) + ": " + attempt.failure + "; the step halved");
   }
   result.u = u;
+  result.analyze_seconds = solver.analyze_seconds;
   internal_forces(em, *problem.body, problem.law, u, result.energy, result.r, nullptr, &result.min_J);
   return result;
 }

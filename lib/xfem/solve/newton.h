@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,12 +21,32 @@ struct NonlinearProblem {
   std::function<void(double s, std::vector<long>& fixed, std::vector<double>& values)> dirichlet;
 };
 
+struct LoadStep;
+
+/// The linear solve of a Newton iteration: K du = rhs on the free DOFs with du = `change` on the
+/// `fixed` ones (K the tangent, both triangles, the same pattern every time). CHOLMOD
+/// (cholmod_tangent_solver) or PETSc on MPI ranks (newton_petsc.h). Adds its times (and CG
+/// iterations) to `step`. Throws NotPositiveDefinite when K_ff cannot be solved as positive
+/// definite: the iteration then projects the tangent, and halves the load step if that fails too.
+class TangentSolver {
+ public:
+  virtual ~TangentSolver() = default;
+  virtual Eigen::VectorXd solve(const SparseMatrix& K, const Eigen::VectorXd& rhs, const std::vector<long>& fixed,
+                                const std::vector<double>& change, LoadStep& step) = 0;
+  double analyze_seconds = 0.0;  ///< one-off set-up (CHOLMOD's symbolic analysis), not in the steps' times
+};
+
+/// CHOLMOD with one symbolic analysis (ordering "metis" or "amd") for every factorization.
+std::unique_ptr<TangentSolver> cholmod_tangent_solver(const std::string& ordering);
+
 struct NewtonOptions {
   int load_steps = 1;       ///< equal steps of s to reach 1
   int max_iterations = 25;  ///< Newton iterations per step before the step is halved
   int max_halvings = 6;     ///< a step halved at most this often (1/64 of a load step)
   double rtol = 1e-8;       ///< converged: ||r - s f|| on the free DOFs <= rtol * its scale (below)
-  std::string ordering = "metis";
+  std::string ordering = "metis";  ///< CHOLMOD's, when `solver` is null
+  /// The linear solver (not owned); null: CHOLMOD with `ordering`.
+  TangentSolver* solver = nullptr;
   /// Progress: a line per load step (`info`) and per Newton iteration (`detail`); either may be empty.
   std::function<void(const std::string&)> info, detail;
 };
@@ -43,10 +64,12 @@ struct LoadStep {
   std::vector<NewtonIteration> iterations;
   double final_residual = 0.0;             ///< relative residual at the accepted u
   /// Wall time: forces and tangents (assemble), numeric factorizations with the Dirichlet
-  /// elimination before them (factor), triangular solves (solve).
+  /// elimination before them (factor; PETSc: the matrix's distribution and the preconditioner's
+  /// set-up), triangular solves (solve; PETSc: the CG iterations).
   double factor_seconds = 0.0, assemble_seconds = 0.0, solve_seconds = 0.0;
   int tangents = 0;        ///< tangent assemblies (each with its forces)
-  int factorizations = 0;  ///< numeric factorizations, failed ones included
+  int factorizations = 0;  ///< numeric factorizations (PETSc: preconditioner set-ups), failed ones included
+  long linear_iterations = 0;  ///< PETSc: CG iterations of the step's solves (0 with CHOLMOD)
   int projected = 0;       ///< iterations that needed the projected tangent (element_forces.h)
   std::string failure;  ///< why it did not converge (empty when it did)
 };
@@ -60,13 +83,13 @@ struct NewtonResult {
   double energy = 0.0;               ///< strain energy at u (J)
   double min_J = 0.0;                ///< smallest det F at u
   int factorizations = 0;
-  double analyze_seconds = 0.0;      ///< the one symbolic analysis
+  double analyze_seconds = 0.0;      ///< the one symbolic analysis (CHOLMOD)
 };
 
 /// Solves the problem with Newton's method and a backtracking line search in load steps:
 ///  - each iteration solves K_ff du_f = -(R_f + K_fc du_c) (K the tangent, R = r(u) - s f, du_c
-///    the remaining change of the Dirichlet values) with CHOLMOD, one symbolic analysis for every
-///    factorization of the solve;
+///    the remaining change of the Dirichlet values) with options.solver (CHOLMOD by default, one
+///    symbolic analysis for every factorization of the solve);
 ///  - the line search halves the step (up to 10 times) while a point of a nonlinear model would
 ///    invert (det F <= 0; the points next to a crack front never refuse: element_forces.h) or the
 ///    residual would grow (an iteration that moves the Dirichlet values is taken if it inverts

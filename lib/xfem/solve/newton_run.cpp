@@ -9,6 +9,7 @@
 #include "xfem/io/matrix_market.h"
 #include "xfem/solve/newton.h"
 #include "xfem/system/assembly.h"
+#include "xfem/system/deformed_volume_at_points.h"
 #include "xfem/system/dirichlet_data.h"
 #include "xfem/system/pieces.h"
 #include "xfem/system/reactions.h"
@@ -34,6 +35,7 @@ Json steps_json(const std::vector<LoadStep>& steps) {
                    {"projected_tangents", s.projected},
                    {"tangents", s.tangents},
                    {"factorizations", s.factorizations},
+                   {"linear_iterations", s.linear_iterations},
                    {"assemble_seconds", s.assemble_seconds},
                    {"factor_seconds", s.factor_seconds},
                    {"solve_seconds", s.solve_seconds}});
@@ -82,6 +84,7 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   o.max_iterations = run.max_iterations;
   o.rtol = run.rtol;
   o.ordering = run.ordering;
+  o.solver = run.solver;
   o.info = [](const std::string& m) { cli::info(m); };
   o.detail = [](const std::string& m) { cli::detail(m); };
   clock = std::chrono::steady_clock::now();
@@ -100,6 +103,28 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   for (const Resultant& r : conditions) cli::info(describe_reaction(r, true));
   long iterations = 0;
   for (const LoadStep& s : result.steps) iterations += static_cast<long>(s.iterations.size()) - 1;
+  // The volume the body keeps, on the solve's own points (deformed.vtu's straight-edged cells
+  // differ where F varies: docs/VERIFICATION.md "Large deformation").
+  const PointVolume volume = deformed_volume_at_points(em, body, result.u);
+  const auto change = [](const PointVolume::Part& p) { return p.before > 0 ? p.after / p.before - 1.0 : 0.0; };
+  cli::info("volume on the integration points " + cli::three_digits(volume.body.before) + " m^3 -> " +
+            cli::three_digits(volume.body.after) + " m^3 (" + cli::three_digits(100 * change(volume.body)) +
+            " %; plain tets " + cli::three_digits(100 * change(volume.plain)) + " %, sign-enriched " +
+            cli::three_digits(100 * change(volume.sign)) + " %, branch-enriched " +
+            cli::three_digits(100 * change(volume.branch)) + " %); largest det F " + cli::three_digits(volume.body.max_J) +
+            " in tet " + std::to_string(volume.body.max_J_tet) + ", in a plain tet " +
+            cli::three_digits(volume.plain.max_J));
+  const auto part_json = [&](const PointVolume::Part& p) {
+    return Json{{"tets", p.tets}, {"before", p.before}, {"after", p.after}, {"relative_change", change(p)},
+                {"max_det_F", p.max_J}, {"max_det_F_tet", p.max_J_tet},
+                {"max_det_F_centroid", {p.max_J_at.x(), p.max_J_at.y(), p.max_J_at.z()}}};
+  };
+  report["volume"] = {{"body", part_json(volume.body)},
+                      {"plain_tets", part_json(volume.plain)},
+                      {"sign_tets", part_json(volume.sign)},
+                      {"branch_tets", part_json(volume.branch)}};
+  report["backend"] = run.backend;
+  report["processes"] = run.processes;
   report["n"] = em.n;
   report["dofs"] = 3 * em.n;
   report["fixed_dofs"] = static_cast<long>(result.fixed.size());
@@ -116,6 +141,7 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   report["integrate_seconds"] = integrate_seconds;
   report["analyze_seconds"] = result.analyze_seconds;
   report["solve_seconds"] = solve_seconds;
+  if (!run.root) return;  // rank 0 writes
   if (!run.reactions_path.empty()) write_vector(reactions, run.reactions_path);
   write_vector(result.u, run.output, provenance_comments(solution_provenance(em, run.problem_path)));
   if (!run.report_path.empty()) write_json(report, run.report_path);

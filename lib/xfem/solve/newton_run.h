@@ -4,6 +4,7 @@
 
 #include "xfem/core/json_io.h"
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/solve/newton.h"
 #include "xfem/system/problem.h"
 
 namespace xfem {
@@ -19,6 +20,13 @@ struct NewtonRun {
   const TetMaterials* materials = nullptr;
   double rtol = 1e-8;
   int max_iterations = 25;
+  /// The linear solver (not owned; newton.h): null for CHOLMOD with `ordering`; `backend` and
+  /// `processes` name it in the report.
+  TangentSolver* solver = nullptr;
+  std::string backend = "cholmod";
+  int processes = 1;
+  /// False on the ranks of a PETSc run other than rank 0: they solve along and write nothing.
+  bool root = true;
 };
 
 /// The large-deformation solve of `problem` on `em` (xfem-newton): the body integrated once with
@@ -26,7 +34,8 @@ struct NewtonRun {
 /// (newton.h), then the outputs xfem-solve writes: the reactions r(u) - f on the constrained
 /// DOFs (each condition's resultant logged and reported), u.mtx with the fingerprints of the
 /// mesh, the cuts and the problem, and the report (the steps with their residual histories,
-/// factorizations, timings). Progress on stderr per load step (cli::info) and per iteration
+/// factorizations, timings, the backend, the deformed volume on the points:
+/// deformed_volume_at_points). Progress on stderr per load step (cli::info) and per iteration
 /// (cli::detail). Throws xfem::Error, writing nothing, for the oversampling rule, a piece
 /// without a Dirichlet condition, or a Newton failure after the smallest step.
 void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun& run, Json& report);

@@ -201,6 +201,16 @@ Eigen::VectorXd petsc_diagonal(PetscMatrix& K) {
   return diag;
 }
 
+Eigen::VectorXd petsc_broadcast(const Eigen::VectorXd& v, long size) {
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  Eigen::VectorXd out = rank == 0 ? v : Eigen::VectorXd(size);
+  if (out.size() != size) throw Error("petsc_broadcast: " + std::to_string(out.size()) + " values, expected " +
+                                      std::to_string(size));
+  MPI_Bcast(out.data(), static_cast<int>(size), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  return out;
+}
+
 PetscResult petsc_solve(const LinearSystem& s, const PetscSolveOptions& options) {
   check_linear_system(s, "petsc_solve");
   return petsc_solve(petsc_matrix(s.K), s, options);
@@ -375,7 +385,7 @@ PetscResult petsc_solve(PetscMatrix&& K, const LinearSystem& s, const PetscSolve
   r.iterations = iterations;
   r.converged_reason = KSPConvergedReasons[reason];
   if (reason < 0)
-    throw Error("PETSc CG + " + r.preconditioner + " did not converge (" + r.converged_reason + " after " +
+    throw PetscNotConverged("PETSc CG + " + r.preconditioner + " did not converge (" + r.converged_reason + " after " +
                 std::to_string(iterations) +
                 " iterations): the system may be singular (a loose piece, tiny enriched support) or need more "
                 "iterations (--max-iterations)");
@@ -429,6 +439,7 @@ PetscMatrix& PetscMatrix::operator=(PetscMatrix&&) noexcept = default;
 PetscMatrix petsc_load_matrix(const std::string&, long) { throw Error("this build has no PETSc: use --backend cholmod"); }
 PetscMatrix petsc_matrix(const SparseMatrix&) { throw Error("this build has no PETSc: use --backend cholmod"); }
 Eigen::VectorXd petsc_diagonal(PetscMatrix&) { throw Error("this build has no PETSc: use --backend cholmod"); }
+Eigen::VectorXd petsc_broadcast(const Eigen::VectorXd&, long) { throw Error("this build has no PETSc"); }
 PetscResult petsc_solve(PetscMatrix&&, const LinearSystem&, const PetscSolveOptions&) {
   throw Error("this build has no PETSc: use --backend cholmod");
 }

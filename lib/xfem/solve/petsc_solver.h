@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "xfem/core/error.h"
 #include "xfem/system/linear_system.h"
 
 namespace xfem {
@@ -106,6 +107,18 @@ PetscMatrix petsc_matrix(const SparseMatrix& K);
 
 /// The diagonal of K, whole, on every rank (for the checks of enriched DOFs without support).
 Eigen::VectorXd petsc_diagonal(PetscMatrix& K);
+
+/// CG did not converge (petsc_solve): its message names PETSc's reason. Collective: every rank
+/// throws it alike. xfem-newton takes it for a tangent that is not positive definite (projected
+/// tangent, then a halved load step); xfem-solve reports it as any Error.
+class PetscNotConverged : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Rank 0's `v` (its length `size`; ignored elsewhere) on every rank (MPI_Bcast): the ranks of
+/// xfem-newton all continue from the same Newton update. Needs a live PetscSession.
+Eigen::VectorXd petsc_broadcast(const Eigen::VectorXd& v, long size);
 
 /// Solves K u = f, K given distributed in `K` (consumed: the elimination works in place), f,
 /// the fixed DOFs and coordinates from `system` (its K is not used), with CG preconditioned by
