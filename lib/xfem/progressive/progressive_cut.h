@@ -105,7 +105,8 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 /// new triangles); element matrices are computed only for enriched tets whose inputs changed
 /// since the previous step (their enrichment layout, node sides, cut class, the sweep's triangles
 /// near them and, where the front matters, the front segments near them), the others reused; the
-/// enriched DOFs' columns of K are gathered from them and the Schur complement on the enriched DOFs
+/// enriched DOFs' columns of K are gathered from them (an enriched DOF none of whose tets changed
+/// keeps the previous step's columns) and the Schur complement on the enriched DOFs
 /// updated (IncrementalSchur: only new or changed columns computed, its Cholesky factor refactorized
 /// from the first changed row on). The solution equals solve_cut's (and the six tools') to round-off.
 class ProgressiveCut {
