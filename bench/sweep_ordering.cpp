@@ -19,6 +19,7 @@
 #include "xfem/generate/cut_sweep.h"
 #include "xfem/io/vtk_io.h"
 #include "xfem/progressive/progressive_cut.h"
+#include "xfem/solve/cholmod_view.h"
 #include "xfem/system/problem.h"
 
 namespace {
@@ -82,24 +83,13 @@ int main(int argc, char** argv) {
   long region = 0;
   for (int f = 0; f < nf; ++f) region += in_region[f] = first_step[f] > 0;
 
-  // K_ss's lower triangle as CHOLMOD's (int indices, compressed columns).
+  // K_ss's lower triangle as CHOLMOD's (the library's view, as CholeskyFactor passes it).
   xfem::SparseMatrix K = body.K_ss;
   K.makeCompressed();
-  std::vector<int> p(K.outerIndexPtr(), K.outerIndexPtr() + nf + 1), i(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
-  std::vector<double> x(K.valuePtr(), K.valuePtr() + K.nonZeros());
+  cholmod_sparse A = xfem::lower_triangle_view(K);
   cholmod_common c;
   cholmod_start(&c);
-  cholmod_sparse A{};
-  A.nrow = A.ncol = nf;
-  A.nzmax = x.size();
-  A.p = p.data();
-  A.i = i.data();
-  A.x = x.data();
-  A.stype = -1;
-  A.itype = CHOLMOD_INT;
-  A.xtype = CHOLMOD_REAL;
-  A.dtype = CHOLMOD_DOUBLE;
-  A.sorted = A.packed = 1;
+  c.print = 0;
 
   const Fill metis = analyze(&A, CHOLMOD_METIS, nullptr, in_region, c);
   const Fill amd = analyze(&A, CHOLMOD_AMD, nullptr, in_region, c);

@@ -7,6 +7,7 @@
 
 #include "xfem/generate/box_mesh.h"
 #include "xfem/generate/cut_sweep.h"
+#include "xfem/generate/organ_shape.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
 #include "xfem/generate/unstructured_mesh.h"
@@ -452,6 +453,52 @@ TEST_CASE("classification: a growing cut classified incrementally equals classif
     CHECK(edges < 13 * static_cast<long>(mesh.tets.rows()));
     CHECK(tested > 0);
   }
+}
+
+TEST_CASE("classification: an organ's growing cut classified incrementally equals classify at every step, judging "
+          "the sides of only the points the new triangles come near",
+          "[classification][progressive_cut]") {
+  // pipelines/sweep's blade (an arc over the top, 0.05 m deep) through a coarse organ, every step:
+  // the classifier keeps each point's distance to the cut and judges its side anew only where a
+  // new triangle comes as close (issue 35).
+  const xfem::TetMesh mesh = xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, 0.012);
+  xfem::BladePath path;
+  path.centre = {0, -0.09, 0.06};
+  path.radius = 0.1;
+  path.a0 = 40;
+  path.a1 = 140;
+  const xfem::TriangleMesh sweep = xfem::cut_sweep(path, 0.05, {0, 0, -1}, 0.0, 0.006, 4.0);
+  const std::vector<double> times = xfem::cut_times(sweep, "sweep");
+  const std::vector<double> t = xfem::step_times(times, 12);
+  xfem::GrowingCutClassifier growing(mesh);
+  long incremental = 0, judged_late = 0, late = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    INFO("step " << k + 1);
+    const std::vector<int> ids = xfem::cut_until_ids(times, t[k]);
+    if (ids.empty()) continue;
+    const xfem::CutSurface cut(xfem::cut_until(sweep, times, t[k]));
+    const xfem::Classification a = growing.classify(cut, ids);
+    const xfem::Classification b = xfem::classify(mesh, cut);
+    CHECK(a.side == b.side);
+    CHECK(a.on_cut == b.on_cut);
+    CHECK(a.enrichment == b.enrichment);
+    CHECK(a.cut_class == b.cut_class);
+    CHECK(a.cut_edges == b.cut_edges);
+    CHECK(a.cut_faces == b.cut_faces);
+    CHECK(xfem::count_values(a.counts) == xfem::count_values(b.counts));
+    REQUIRE(a.front.segments().size() == b.front.segments().size());
+    for (std::size_t i = 0; i < a.front.segments().size(); ++i) {
+      CHECK(a.front.segments()[i].p0 == b.front.segments()[i].p0);
+      CHECK(a.front.segments()[i].p1 == b.front.segments()[i].p1);
+    }
+    incremental += growing.stats().incremental;
+    if (k + 4 >= t.size()) {  // the last steps: the blade's front far from most of the body
+      judged_late += growing.stats().sides;
+      late += 1;
+    }
+  }
+  CHECK(incremental >= 10);
+  CHECK(judged_late < late * mesh.points.rows() / 2);
 }
 
 TEST_CASE("classification: a growing cut's classifier refuses ids that do not match the triangles",

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <random>
 #include <string>
 
 #include "xfem/system/assembly.h"
@@ -22,6 +23,7 @@
 #include "xfem/enrich/classification.h"
 #include "xfem/solve/incremental_schur.h"
 #include "xfem/io/paraview_collection.h"
+#include "xfem/progressive/box_grid.h"
 #include "xfem/progressive/progressive_cut.h"
 #include "xfem/solve/schur_solver.h"
 #include "enriched_test_meshes.h"
@@ -370,4 +372,41 @@ TEST_CASE("progressive cut: with two materials, the Schur step and the sweep's s
     const xfem::CutSolution single = xfem::solve_cut(one, cut, {}, xfem::CutSolver::Schur);
     CHECK((single.u - u).norm() > 1e-3 * u.norm());
   }
+}
+
+TEST_CASE("box grid: the boxes meeting a box are those a test of every box finds", "[progressive_cut]") {
+  // Random thin and flat boxes (a cut's triangles), queries of every size, touching ones (closed
+  // boxes) and queries outside the grid; cells finer and coarser than the boxes.
+  std::mt19937 rng(35);
+  std::uniform_real_distribution<double> at(-1, 1), size(0, 0.2);
+  std::vector<xfem::BoxGrid::Box> boxes(300);
+  for (auto& b : boxes) {
+    b.col(0) = Eigen::Vector3d(at(rng), at(rng), 0.1 * at(rng));
+    b.col(1) = b.col(0) + Eigen::Vector3d(size(rng), size(rng), 0.1 * size(rng));
+  }
+  for (double cell : {0.01, 0.1, 0.5, 5.0}) {
+    INFO("cell " << cell);
+    const xfem::BoxGrid grid(boxes, cell);
+    std::vector<int> found;
+    long hits = 0;
+    for (int q = 0; q < 400; ++q) {
+      Eigen::Vector3d lo(1.5 * at(rng), 1.5 * at(rng), 0.3 * at(rng));
+      Eigen::Vector3d hi = lo + Eigen::Vector3d::Constant(q % 4 == 0 ? 0.0 : size(rng) * (q % 3 + 1));
+      if (q % 7 == 0) {  // exactly touching box q % 300 at its corner
+        lo = boxes[q % 300].col(1);
+        hi = lo + Eigen::Vector3d::Constant(0.05);
+      }
+      grid.meeting(lo, hi, found);
+      std::vector<int> expected;
+      for (int k = 0; k < static_cast<int>(boxes.size()); ++k)
+        if ((boxes[k].col(0).array() <= hi.array()).all() && (boxes[k].col(1).array() >= lo.array()).all())
+          expected.push_back(k);
+      CHECK(found == expected);
+      hits += static_cast<long>(expected.size());
+    }
+    CHECK(hits > 100);  // the queries do meet boxes
+  }
+  std::vector<int> found{1, 2};
+  xfem::BoxGrid({}, 1.0).meeting(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), found);
+  CHECK(found.empty());
 }

@@ -233,6 +233,12 @@ struct GrowingCutClassifier::Memory {
   bool classified = false;            // the above hold a cut's answers
   std::vector<int> ids;               // the previous cut's triangle ids, increasing
   std::vector<std::array<double, 9>> corners;  // their corners, in the order of `ids`
+  // GrowingCutClassifier only (keep_distances): per point its distance to the previous cut and its
+  // side (before D1's snapping), so that a point no new triangle comes as close to keeps its side.
+  bool keep_distances = false;
+  std::vector<double> distance;
+  std::vector<int> side;
+  std::vector<double> support;        // per point: its support's volume (the mesh alone), once
 };
 
 namespace {
@@ -242,6 +248,7 @@ using Box = Eigen::Matrix<double, 3, 2>;  // columns lo, hi
 // The boxes of the triangles added since the previous cut, and their union.
 struct Growth {
   std::vector<Box> boxes;
+  std::vector<std::array<Eigen::Vector3d, 3>> corners;  // of each new triangle, in the order of `boxes`
   Box all;
   // Does the closed box [lo - grow, hi + grow] meet a new triangle's box?
   bool near(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double grow = 0) const {
@@ -253,7 +260,42 @@ struct Growth {
       if (meets(b)) return true;
     return false;
   }
+  // The distance from x to the nearest new triangle, or `bound` when none is nearer than that.
+  double distance(const Eigen::Vector3d& x, double bound) const;
 };
+
+// The point of triangle (a, b, c) closest to p (Ericson, "Real-Time Collision Detection", 5.1.5).
+Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                   const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+double Growth::distance(const Eigen::Vector3d& x, double bound) const {
+  double d = bound;
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    const Box& b = boxes[k];
+    if (((b.col(0) - x).array() > d).any() || ((x - b.col(1)).array() > d).any()) continue;  // its box is farther
+    const auto& t = corners[k];
+    d = std::min(d, (closest_on_triangle(x, t[0], t[1], t[2]) - x).norm());
+  }
+  return d;
+}
 
 // The mesh's unique edges and each tet's edges into `memory`.
 void find_edges(const TetMesh& mesh, GrowingCutClassifier::Memory& memory) {
@@ -287,12 +329,43 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
                             : std::function<void(double)>();
   };
 
-  // 1. Points: on the cut (exactly, D1) and side H.
+  // 1. Points: on the cut (exactly, D1) and side H. A point's side is judged at its closest cut
+  //    point; when every new triangle's box lies farther from the point than the previous cut did,
+  //    that closest point stays where it was, on an old triangle whose feature (face, edge or
+  //    vertex) gained no neighbour (a new triangle sharing it would hold that very point), so the
+  //    pseudo-normal and the side stay too: only points some new triangle comes as close to are
+  //    judged anew (GrowingCutClassifier, which keeps the distances).
   c.side.assign(V, 1);
   c.on_cut.assign(V, 0);
+  const bool keep_distances = memory.keep_distances;
+  const bool reuse_sides = growth && keep_distances && static_cast<long>(memory.distance.size()) == V &&
+                           static_cast<long>(memory.side.size()) == V;
+  if (keep_distances && !reuse_sides) memory.distance.assign(V, 0.0);
+  //    The distance to the grown cut is the smaller of the distance to the old one and to the new
+  //    triangles (computed for the points some new triangle's box comes that close to).
+  std::vector<char> judge(reuse_sides ? V : 0, 0);
+  std::atomic<long> judged{0};
   parallel_for(V, [&](long b, long e) {
-    const std::vector<int> s = cut.sides(mesh.points, b, e);
-    std::copy(s.begin(), s.end(), c.side.begin() + b);
+    long sided = 0;
+    if (reuse_sides) {
+      for (long i = b; i < e; ++i) {
+        const Eigen::Vector3d x = mesh.points.row(i).transpose();
+        const double d = memory.distance[i];
+        if (growth->near(x, x, d * (1 + 1e-9) + 1e-300)) {
+          judge[i] = 1;
+          memory.distance[i] = growth->distance(x, d);
+        } else {
+          c.side[i] = memory.side[i];
+        }
+      }
+    } else {
+      const std::vector<int> s = cut.sides(mesh.points, b, e);
+      std::copy(s.begin(), s.end(), c.side.begin() + b);
+      if (keep_distances)
+        for (long i = b; i < e; ++i) memory.distance[i] = cut.closest(mesh.points.row(i).transpose()).distance;
+      sided = e - b;
+    }
+    judged += sided;
     long tested = 0;
     for (long i = b; i < e; ++i) {
       const Eigen::Vector3d x = mesh.points.row(i).transpose();
@@ -305,7 +378,20 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
     }
     tested_points += tested;
   }, report(0.0, 0.3));
+  if (reuse_sides) {  // the sides judged anew, in the points' order (sides() is fastest on neighbours)
+    std::vector<long> which;
+    for (long i = 0; i < V; ++i)
+      if (judge[i]) which.push_back(i);
+    Points rows(static_cast<long>(which.size()), 3);
+    for (std::size_t j = 0; j < which.size(); ++j) rows.row(static_cast<long>(j)) = mesh.points.row(which[j]);
+    parallel_for(rows.rows(), [&](long b, long e) {
+      const std::vector<int> s = cut.sides(rows, b, e);
+      for (long j = b; j < e; ++j) c.side[which[j]] = s[j - b];
+    }, {}, 1024);
+    judged = static_cast<long>(which.size());
+  }
   memory.on_cut = c.on_cut;
+  if (keep_distances) memory.side = c.side;
 
   // 2. Unique edges, each tested once (D2 for edges with an end point on the cut). An edge whose
   //    end points are off the grown cut were off the old one: its old answer is known.
@@ -346,6 +432,9 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
     if (!edge_cut[i]) continue;
     for (const int p : {static_cast<int>(unique[i] >> 32), static_cast<int>(unique[i] & 0xffffffffu)}) {
       if (c.on_cut[p] || snapped[p]) continue;
+      // The kept distance is the true one to round-off: only points it puts near the tolerance are
+      // measured again, as classify() measures them.
+      if (keep_distances && memory.distance[p] > 2 * on_cut_tolerance) continue;
       if (cut.closest(mesh.points.row(p).transpose()).distance <= on_cut_tolerance) snapped[p] = 1;
     }
   }
@@ -455,15 +544,22 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
   //    the node's own, at least options.tiny_support of the support's volume; below that the sign
   //    function is nearly zero and makes K near-singular, and it is removed (counted, sign_tiny).
   c.enrichment.assign(V, Enrichment::None);
-  std::vector<double> support(V, 0.0), opposite(V, 0.0);
+  if (static_cast<long>(memory.support.size()) != V) {  // the mesh alone: once per classifier
+    memory.support.assign(V, 0.0);
+    for (long t = 0; t < T; ++t) {
+      const double v = std::abs(signed_volume(mesh, static_cast<int>(t)));
+      for (int k = 0; k < 4; ++k) memory.support[mesh.tets(t, k)] += v;
+    }
+  }
+  const std::vector<double>& support = memory.support;
+  std::vector<double> opposite(V, 0.0);
   for (long t = 0; t < T; ++t) {
     for (int k = 0; k < 4; ++k)
       if (corners[t] & (1u << k)) c.enrichment[mesh.tets(t, k)] = Enrichment::Branch;
-    const double v = std::abs(signed_volume(mesh, static_cast<int>(t)));
+    if (c.cut_class[t] != CutClass::Complete) continue;
     for (int k = 0; k < 4; ++k) {
       const int m = mesh.tets(t, k);
-      support[m] += v;
-      if (c.cut_class[t] == CutClass::Complete) opposite[m] += c.side[m] > 0 ? below[t] : above[t];
+      opposite[m] += c.side[m] > 0 ? below[t] : above[t];
     }
   }
   for (long m = 0; m < V; ++m) {
@@ -507,6 +603,7 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
   stats.points = tested_points;
   stats.edges = tested_edges;
   stats.tets = tested_tets;
+  stats.sides = judged;
   return c;
 }
 
@@ -519,7 +616,9 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
 }
 
 GrowingCutClassifier::GrowingCutClassifier(const TetMesh& mesh, const ClassifyOptions& options)
-    : mesh_(&mesh), options_(options), memory_(std::make_unique<Memory>()) {}
+    : mesh_(&mesh), options_(options), memory_(std::make_unique<Memory>()) {
+  memory_->keep_distances = true;
+}
 GrowingCutClassifier::~GrowingCutClassifier() = default;
 GrowingCutClassifier::GrowingCutClassifier(GrowingCutClassifier&&) noexcept = default;
 GrowingCutClassifier& GrowingCutClassifier::operator=(GrowingCutClassifier&&) noexcept = default;
@@ -562,6 +661,9 @@ Classification GrowingCutClassifier::classify(const CutSurface& cut, const std::
     growth.all.col(0) = growth.all.col(0).cwiseMin(b.col(0));
     growth.all.col(1) = growth.all.col(1).cwiseMax(b.col(1));
     growth.boxes.push_back(b);
+    growth.corners.push_back({Eigen::Vector3d(corners[0], corners[1], corners[2]),
+                              Eigen::Vector3d(corners[3], corners[4], corners[5]),
+                              Eigen::Vector3d(corners[6], corners[7], corners[8])});
   }
   grows = grows && old == m.ids.size();
   m.ids.clear();

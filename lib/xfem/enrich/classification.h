@@ -75,9 +75,9 @@ Classification classify(const TetMesh& mesh, const CutSurface& cut, const Classi
 /// added since: a point or edge whose box misses every new triangle's box meets the grown cut iff it
 /// met the old one (exact predicates on closed triangles); a tet's volumes are reused when no new
 /// triangle's box comes within the tet's longest edge of its box (its pieces and their sides, judged
-/// at the closest cut point, cannot change). The node sides (closest-point based: a far node's
-/// closest point may move to the new triangles), the front and everything derived are computed as
-/// classify() does. The result equals classify(mesh, cut, options) exactly (test/unit/classification.cpp).
+/// at the closest cut point, cannot change); a point's side is reused when no new triangle's box
+/// comes as close to it as the previous cut was (its closest cut point and that point's
+/// pseudo-normal stay). The front and everything derived are computed as classify() does. The result equals classify(mesh, cut, options) exactly (test/unit/classification.cpp).
 class GrowingCutClassifier {
  public:
   /// `mesh` must outlive the classifier.
@@ -91,10 +91,13 @@ class GrowingCutClassifier {
   /// same id and the same corners, is classified incrementally, any other cut from scratch.
   Classification classify(const CutSurface& cut, const std::vector<int>& ids);
 
-  /// What the last call did: 1 if incrementally; points, edges and tets whose geometry was tested anew.
+  /// What the last call did: 1 if incrementally; points, edges and tets whose geometry was tested
+  /// anew; points whose side was judged anew (a new triangle came as close to them as the previous
+  /// cut was: their closest cut point may have moved).
   struct Stats {
     bool incremental = false;
     long points = 0, edges = 0, tets = 0;
+    long sides = 0;
   };
   const Stats& stats() const { return stats_; }
 

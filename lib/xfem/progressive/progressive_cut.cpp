@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/progressive/progressive_cut.h"
 
+#include "xfem/progressive/box_grid.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -272,8 +274,8 @@ namespace {
 //    nearest front points and the frame interpolated between neighbouring segments of length
 //    <= h); a partially cut tet without branch DOFs is split at the front: those within 2 h. A
 //    completely cut tet without branch DOFs never looks at the front (one point per cut piece).
-std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector<int>& ids,
-                                const std::vector<Eigen::Matrix<double, 3, 2>>& boxes, bool conforming) {
+std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector<int>& ids, const BoxGrid& boxes,
+                                bool conforming, std::vector<int>& near_triangles) {
   std::vector<double> key;
   key.push_back(em.cut_class[t]);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo, centre = Eigen::Vector3d::Zero();
@@ -299,9 +301,8 @@ std::vector<double> element_key(const EnrichedMesh& em, int t, const std::vector
   lo.array() -= grow;
   hi.array() += grow;
   key.push_back(-1);
-  for (std::size_t k = 0; k < boxes.size(); ++k)
-    if ((boxes[k].col(0).array() <= hi.array()).all() && (boxes[k].col(1).array() >= lo.array()).all())
-      key.push_back(ids[k]);
+  boxes.meeting(lo, hi, near_triangles);  // the triangles k whose box meets the tet's grown box, increasing
+  for (int k : near_triangles) key.push_back(ids[k]);
   key.push_back(-1);
   const auto& segments = em.front.segments();
   if (segments.empty() || (!branch && em.cut_class[t] != 1)) return key;
@@ -399,10 +400,16 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   std::vector<int> tets, stale;
   for (int t = 0; t < em.tets(); ++t)
     if (em.size(t) > 4) tets.push_back(t);
+  // The triangles' boxes in a grid of cells a few triangles wide: a tet asks only the cells its
+  // (grown) box meets, not every triangle of the cut.
+  double extent = 0;
+  for (const auto& b : boxes) extent += (b.col(1) - b.col(0)).maxCoeff();
+  const BoxGrid grid(boxes, boxes.empty() ? 1.0 : 4 * extent / static_cast<double>(boxes.size()));
   std::vector<std::vector<double>> all_keys(tets.size()), keys;
   parallel_for(static_cast<long>(tets.size()), [&](long begin, long end) {
+    std::vector<int> near;
     for (long i = begin; i < end; ++i)
-      all_keys[i] = element_key(em, tets[i], ids, boxes, problem.rule == Problem::Rule::Conforming);
+      all_keys[i] = element_key(em, tets[i], ids, grid, problem.rule == Problem::Rule::Conforming, near);
   }, {}, 256);
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const auto it = elements_.find(tets[i]);
@@ -465,13 +472,32 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
   }
   const auto key_of = [&](long d, int i) { return (point_of[d] * 5 + function_of[d]) * 3 + i; };
   // Column 3 d + i of every enriched DOF, independently of the others: in a few threads, the same bits.
+  // A DOF whose tets (and their entries) are those of the previous step, none integrated anew, has
+  // the previous step's columns: its element matrices, their rows' DOFs (the tet's layout is in its
+  // key) and so the sums are the same; it is copied, not summed again.
+  std::vector<char> recomputed(static_cast<std::size_t>(em.tets()), 0);
+  for (int t : stale) recomputed[t] = 1;
   std::vector<EnrichedColumn> all(static_cast<std::size_t>(3 * ne));
   std::vector<double> all_g(static_cast<std::size_t>(3 * ne), 0.0);
+  std::vector<char> reused(static_cast<std::size_t>(ne), 0);
   parallel_for(ne, [&](long begin, long end) {
     std::vector<double> free_sum(nf, 0.0), enriched_sum(3 * ne, 0.0);
     std::vector<int> free_rows;
     std::vector<long> enriched_rows;
-    for (long d = begin; d < end; ++d)
+    for (long d = begin; d < end; ++d) {
+      const auto it = columns_.find(point_of[d] * 5 + function_of[d]);
+      if (it != columns_.end() &&
+          std::equal(incidence.begin() + first[d], incidence.begin() + first[d + 1], it->second.incidence.begin(),
+                     it->second.incidence.end()) &&
+          std::none_of(incidence.begin() + first[d], incidence.begin() + first[d + 1],
+                       [&](const std::pair<int, int>& a) { return recomputed[a.first] != 0; })) {
+        for (int i = 0; i < 3; ++i) {
+          all[3 * d + i] = it->second.column[i];
+          all_g[3 * d + i] = it->second.g[i];
+        }
+        reused[d] = 1;
+        continue;
+      }
       for (int i = 0; i < 3; ++i) {
         double g = 0;
         for (long a = first[d]; a < first[d + 1]; ++a) {
@@ -519,7 +545,22 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
         std::sort(column.ee.begin(), column.ee.end());
         all_g[3 * d + i] = g;
       }
+    }
   }, {}, std::max<long>(64, ne / 8));
+  {  // this step's columns, for the next
+    std::unordered_map<long, Columns> next;
+    next.reserve(static_cast<std::size_t>(ne));
+    for (long d = 0; d < ne; ++d) {
+      Columns& c = next[point_of[d] * 5 + function_of[d]];
+      c.incidence.assign(incidence.begin() + first[d], incidence.begin() + first[d + 1]);
+      for (int i = 0; i < 3; ++i) {
+        c.column[i] = all[3 * d + i];
+        c.g[i] = all_g[3 * d + i];
+      }
+      out.reused_columns += 3 * reused[d];
+    }
+    columns_ = std::move(next);
+  }
   std::vector<EnrichedColumn> columns;
   std::vector<double> g_e;
   for (long c = 0; c < 3 * ne; ++c) {

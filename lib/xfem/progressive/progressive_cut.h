@@ -79,6 +79,7 @@ struct CutSolution {
   double keys_seconds = 0;         ///< ProgressiveCut, part of assemble_seconds: which element matrices to compute
   double elements_seconds = 0;     ///< ProgressiveCut, part of assemble_seconds: computing them
   IncrementalSchurStats incremental;  ///< ProgressiveCut: what the Schur complement's update did
+  long reused_columns = 0;         ///< ProgressiveCut: enriched columns of K copied from the previous step, not summed
   /// ProgressiveCut::step with complete = false: the load b that the enriched DOFs put on the free
   /// original DOFs (reduced indices), whose response A^-1 b is still to be subtracted from u there
   /// (complete_solution). Empty when u is complete.
@@ -104,7 +105,8 @@ CutSolution solve_cut(const UncutBody& body, std::shared_ptr<const CutSurface> c
 /// new triangles); element matrices are computed only for enriched tets whose inputs changed
 /// since the previous step (their enrichment layout, node sides, cut class, the sweep's triangles
 /// near them and, where the front matters, the front segments near them), the others reused; the
-/// enriched DOFs' columns of K are gathered from them and the Schur complement on the enriched DOFs
+/// enriched DOFs' columns of K are gathered from them (an enriched DOF none of whose tets changed
+/// keeps the previous step's columns) and the Schur complement on the enriched DOFs
 /// updated (IncrementalSchur: only new or changed columns computed, its Cholesky factor refactorized
 /// from the first changed row on). The solution equals solve_cut's (and the six tools') to round-off.
 class ProgressiveCut {
@@ -138,6 +140,12 @@ class ProgressiveCut {
   GrowingCutClassifier classifier_;  // the previous step's classification, reused away from the cut's growth
   SharedFaces faces_;                // the body's, for the check that every piece is held
   std::unordered_map<int, Element> elements_;
+  struct Columns {  // an enriched DOF's three columns of K as the last step gathered them
+    std::vector<std::pair<int, int>> incidence;  // its (tet, entry) pairs, in order
+    EnrichedColumn column[3];
+    double g[3] = {0, 0, 0};
+  };
+  std::unordered_map<long, Columns> columns_;  // by the DOF's point * 5 + function
 };
 
 }  // namespace xfem

@@ -116,6 +116,7 @@ Json step_json(const CutSolution& step, int k, double t, bool incremental, const
           {"assemble_seconds", step.assemble_seconds},
           {"solver", incremental ? "incremental" : step.schur_used ? "schur" : "refactor"},
           {"recomputed_tets", step.recomputed_tets},
+          {"reused_columns", step.reused_columns},
           {"keys_seconds", step.keys_seconds},
           {"elements_seconds", step.elements_seconds},
           {"kept_dofs", step.incremental.kept},

@@ -10,6 +10,7 @@
 
 #include "xfem/core/blas_threads.h"
 #include "xfem/core/seconds_since.h"
+#include "xfem/solve/cholmod_view.h"
 
 namespace xfem {
 namespace {
@@ -19,25 +20,6 @@ namespace {
 // most of all on a busy machine (the organ example's 1,740-DOF solve: 0.11 s wall with the threads,
 // 0.06 s without, docs/PERFORMANCE.md).
 constexpr double kThreadedBlasFlops = 1e9;
-
-// A view of Eigen's compressed columns (int indices, sorted): CHOLMOD reads the lower triangle
-// (stype -1) and ignores the rest, so neither a copy nor a triangle extraction is needed.
-cholmod_sparse lower_triangle_view(const SparseMatrix& A_in) {
-  SparseMatrix& A = const_cast<SparseMatrix&>(A_in);  // CHOLMOD's API is not const; it does not write
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<size_t>(A.rows());
-  a.nzmax = static_cast<size_t>(A.nonZeros());
-  a.p = A.outerIndexPtr();
-  a.i = A.innerIndexPtr();
-  a.x = A.valuePtr();
-  a.stype = -1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_REAL;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
-  return a;
-}
 
 }  // namespace
 
