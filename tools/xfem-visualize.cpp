@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
     const xfem::SnapshotOptions options = xfem::snapshot_options(o, problem, body.wound, camera);
     if (!o.png.empty()) xfem::write_snapshot(body.volume, body.wound, o.png, options);
     xfem::write_visualize_outputs(body, o.output, o.faces, xfem::compression_named(o.compression),
-                                  xfem::visualize_inputs_fingerprint(em, u, o.problem_path, o.wound_offset));
+                                  xfem::visualize_inputs_fingerprint(em, u, o.problem_path, o.wound_offset,
+                                                                     xfem::wound_pressure_values(body)));
     if (!o.script.empty())
       xfem::write_paraview_script(o.script, o.output, o.faces, camera, xfem::colour_top(body.volume), o.scale);
   });

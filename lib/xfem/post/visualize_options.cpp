@@ -106,4 +106,9 @@ void add_contact_pressure(const std::string& path, const EnrichedMesh& em, const
   cli::info("contact pressure on the wound: largest " + cli::three_digits(largest) + " Pa (" + path + ")");
 }
 
+std::vector<double> wound_pressure_values(const DeformedBody& body) {
+  const auto it = body.wound.cell_data.find("contact_pressure");
+  return it == body.wound.cell_data.end() ? std::vector<double>() : it->second.values;
+}
+
 }  // namespace xfem

@@ -41,4 +41,7 @@ void report_cut_opening(const EnrichedMesh& em, const SplitMesh& split, const De
 /// cell array `contact_pressure` (Float64, Pa; wound_pressure.h); reports its largest value.
 void add_contact_pressure(const std::string& path, const EnrichedMesh& em, const SplitMesh& split, DeformedBody& body);
 
+/// The values of the wound's cell array `contact_pressure` (add_contact_pressure), empty without it.
+std::vector<double> wound_pressure_values(const DeformedBody& body);
+
 }  // namespace xfem
