@@ -34,7 +34,8 @@ struct ContactOutcome {
 /// kappa_i per node, whose inner problem for fixed lambda is solved by an active-set (semismooth
 /// Newton) iteration: with the active set A = {i : lambda_i - kappa_i g_i > 0},
 ///   (K + sum_A kappa_i W_i G_i^T G_i) u = f + sum_A W_i lambda_i G_i^T
-/// until A stops changing (5 solves at most); then lambda_i <- max(0, lambda_i - kappa_i g_i)
+/// each step shortened by a line search on the energy of the fixed-lambda problem where it would
+/// raise it, until A stops changing (10 solves at most); then lambda_i <- max(0, lambda_i - kappa_i g_i)
 /// (Uzawa), until the largest penetration max(-g) and the largest gap left open under pressure are
 /// below the tolerance. Every matrix has the same pattern (K's with G^T G's), so CHOLMOD's analysis
 /// is done once and each later solve only refactors. The first solve is the one without contact
