@@ -122,8 +122,8 @@ int main(int argc, char** argv) {
     const xfem::Provenance provenance = xfem::solution_provenance(em, problem_path);
     const xfem::DirichletGroups groups = xfem::dirichlet_groups(em.mesh, problem);
     // Contact between the cuts' faces: the gap operator xfem-solve iterates with (contact_operator.h).
-    const xfem::ContactOperator contact = problem.contact.on ? xfem::contact_operator(em, problem) : xfem::ContactOperator();
-    if (problem.contact.on) xfem::cli::info("contact: " + std::to_string(contact.points()) + " points on the cut faces");
+    const xfem::ContactOperator contact = problem.contact.on ? xfem::contact_operator(em, problem, materials) : xfem::ContactOperator();
+    if (problem.contact.on) xfem::cli::info("contact: " + std::to_string(contact.points()) + " nodes on the cut faces (contact conditions)");
     const std::string generator = std::string("xfem-assemble ") + xfem::version;
     // Written into the temporary directory with the system, before system.json and its manifest
     // (a kill cannot leave a system without them): which condition fixes which DOF (xfem-solve

@@ -8,7 +8,8 @@
 # the tolerance 1e-8 max |u|); pulled by +2 mm the cut opens and contact never acts: the same
 # numbers as with contact off ("no harm", compared to 1e-12). Then the issue's case: the beam's
 # partial cut (x <= 0.015) pushed closed from the top: without contact the faces pass through
-# each other, with contact the penetration is below the tolerance.
+# each other, with contact the penetration is below the tolerance; its pressure written by
+# xfem-solve --contact-pressure and shown on the wound by xfem-visualize; bad inputs of both.
 set -u
 fail() { echo "FAIL: $*" >&2; exit 1; }
 rm -rf "$XFEM_SCRATCH" && mkdir -p "$XFEM_SCRATCH" || exit 1
@@ -86,4 +87,37 @@ PY
 "$B/xfem-solve" -q partial/pushed/system -o bad.mtx --contact-iterations 2 2> err && fail "2 solves accepted"
 [ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-solve: error: contact: no convergence in 2 solves" err || fail "message: $(cat err)"
 [ ! -e bad.mtx ] || fail "output left behind"
+# The pressure for xfem-visualize: xfem-solve --contact-pressure, then the wound's cell array
+# contact_pressure (uncompressed: its name is in the XML) and the largest penetration on stderr.
+"$B/xfem-solve" -q partial/pushed/system -o partial/pushed/u2.mtx --contact-pressure partial/pushed/p.mtx || fail "pressure"
+"$B/xfem-visualize" partial/enriched.vtu --cut partial.vtp --solution partial/pushed/u2.mtx --problem pushed.json \
+  -o partial/pushed/d.vtu --faces partial/pushed/w.vtp --contact-pressure partial/pushed/p.mtx --compression none 2> vis.err \
+  || fail "visualize: $(cat vis.err)"
+grep -q 'Name="contact_pressure"' partial/pushed/w.vtp || fail "wound.vtp has no contact_pressure"
+grep -q "largest penetration of the cut's faces: " vis.err || fail "no penetration line: $(cat vis.err)"
+python3 - <<'PY' || fail "pressure on the wound"
+import json, re
+err = open('vis.err').read()
+shown = float(re.search(r"contact pressure on the wound: largest (\S+) Pa", err).group(1))
+rows = [l.split() for l in open('partial/pushed/p.mtx') if not l.startswith('%')][1:]
+nodal = max(float(r[2]) for r in rows)
+print("partial cut pushed: largest nodal pressure %.4g Pa, on the wound %.4g Pa" % (nodal, shown))
+assert 0 < shown <= nodal * (1 + 1e-2)  # the wound's values are averages of the nodal ones (3 digits shown)
+PY
+# Bad inputs, one line each, nothing written: --contact-pressure without contact in the system,
+# --contact-pressure without --faces, a pressure file of another mesh.
+"$B/xfem-solve" -q through/pulled_off/system -o bad.mtx --contact-pressure bad_p.mtx 2> err && fail "no contact accepted"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-solve: error: through/pulled_off/system: --contact-pressure: the system has no contact operator" err \
+  || fail "message: $(cat err)"
+[ ! -e bad.mtx ] && [ ! -e bad_p.mtx ] || fail "output left behind"
+"$B/xfem-visualize" -q partial/enriched.vtu --cut partial.vtp --solution partial/pushed/u2.mtx --problem pushed.json \
+  -o bad.vtu --contact-pressure partial/pushed/p.mtx 2> err && fail "no --faces accepted"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-visualize: error: partial/pushed/p.mtx: --contact-pressure is shown on the wound: give --faces too" err \
+  || fail "message: $(cat err)"
+printf '%%%%MatrixMarket matrix coordinate real general\n3 1 1\n1 1 5\n' > short.mtx
+"$B/xfem-visualize" -q partial/enriched.vtu --cut partial.vtp --solution partial/pushed/u2.mtx --problem pushed.json \
+  -o bad.vtu --faces bad.vtp --contact-pressure short.mtx 2> err && fail "short pressure file accepted"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-visualize: error: short.mtx: 3 rows, expected one per mesh node" err \
+  || fail "message: $(cat err)"
+[ ! -e bad.vtu ] && [ ! -e bad.vtp ] || fail "output left behind"
 cd / && rm -rf "$XFEM_SCRATCH"

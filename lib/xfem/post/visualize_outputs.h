@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -13,10 +14,12 @@ namespace xfem {
 
 /// What xfem-visualize's outputs are made from (docs/FORMATS.md "deformed.vtu", field array
 /// `inputs_fingerprint`): FNV-1a 64 over the enriched mesh's geometry fingerprint, each cut's,
-/// problem.json's, the solution's values (their IEEE bits) and the wound offset. Two runs with the
+/// problem.json's, the solution's values (their IEEE bits), the wound offset and, with
+/// --contact-pressure, the wound's contact_pressure values (their IEEE bits). Two runs with the
 /// same inputs write the same bytes; a deformed.vtu and a wound.vtp of different runs differ here.
 Fingerprint visualize_inputs_fingerprint(const EnrichedMesh& em, const Eigen::VectorXd& u,
-                                         const std::string& problem_path, double wound_offset);
+                                         const std::string& problem_path, double wound_offset,
+                                         const std::vector<double>& wound_pressure = {});
 
 /// Writes `body.volume` to `volume_path` and, unless `wound_path` is empty, `body.wound` to it,
 /// both carrying `inputs` as the field array "inputs_fingerprint", written together

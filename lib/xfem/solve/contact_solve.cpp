@@ -14,56 +14,51 @@
 namespace xfem {
 namespace {
 
-using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-
-// The points of one tet on one cut (consecutive rows of G) and the DOFs their rows touch: the
-// penalty's block for them is one dense matrix, added to K at `position` (column-major over
-// columns x columns: the entries' places in the values of the contact pattern).
-struct Block {
-  long first = 0, end = 0;
-  std::vector<int> columns;
-  std::vector<long> position;
-};
-
-std::vector<Block> point_blocks(const RowMatrix& G, const ContactOperator& c) {
-  std::vector<Block> blocks;
-  const long Q = c.points();
-  for (long q = 0; q < Q;) {
-    Block b;
-    b.first = q;
-    while (q < Q && c.tet[static_cast<std::size_t>(q)] == c.tet[static_cast<std::size_t>(b.first)] &&
-           c.cut[static_cast<std::size_t>(q)] == c.cut[static_cast<std::size_t>(b.first)]) {
-      for (RowMatrix::InnerIterator it(G, static_cast<int>(q)); it; ++it) b.columns.push_back(static_cast<int>(it.col()));
-      ++q;
-    }
-    b.end = q;
-    std::sort(b.columns.begin(), b.columns.end());
-    b.columns.erase(std::unique(b.columns.begin(), b.columns.end()), b.columns.end());
-    blocks.push_back(std::move(b));
-  }
-  return blocks;
-}
-
-// K with explicit zeros wherever a block may add something: the one pattern of every solve, so
-// that CHOLMOD analyses it once. Fills each block's positions in its values.
-SparseMatrix contact_pattern(const SparseMatrix& K, std::vector<Block>& blocks) {
+// K with explicit zeros wherever the penalty term G^T diag(c) G may add something (G^T G's
+// pattern: a contact node's row couples the DOFs of every cut tet around the node, which K does
+// not always couple): the one pattern of every solve, so that CHOLMOD analyses it once.
+SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& G) {
+  const SparseMatrix GtG = SparseMatrix(G.transpose()) * G;
   std::vector<Eigen::Triplet<double, int>> zeros;
-  for (const Block& b : blocks)
-    for (int col : b.columns)
-      for (int row : b.columns) zeros.emplace_back(row, col, 0.0);
+  zeros.reserve(static_cast<std::size_t>(GtG.nonZeros()));
+  for (int j = 0; j < GtG.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(GtG, j); it; ++it) zeros.emplace_back(static_cast<int>(it.row()), j, 0.0);
   SparseMatrix Z(K.rows(), K.cols());
   Z.setFromTriplets(zeros.begin(), zeros.end());
   SparseMatrix P = K + Z;
   P.makeCompressed();
-  for (Block& b : blocks) {
-    b.position.clear();
-    for (int col : b.columns) {
-      const int* begin = P.innerIndexPtr() + P.outerIndexPtr()[col];
-      const int* end = P.innerIndexPtr() + P.outerIndexPtr()[col + 1];
-      for (int row : b.columns) b.position.push_back(std::lower_bound(begin, end, row) - P.innerIndexPtr());
-    }
-  }
   return P;
+}
+
+// Solves of the inner (fixed multipliers) iteration before the multipliers are updated anyway.
+constexpr int kInnerSolves = 10;
+
+// The step length alpha in (0, 1] along d from u that minimises the energy of the problem with
+// fixed multipliers, Pi(u) = u^T K u / 2 - f^T u + sum_i W_i [lambda_i - kappa_i g_i]_+^2 / (2 kappa_i):
+// Pi is convex and piecewise quadratic along d, its derivative
+//   Pi'(alpha) = d^T (K u - f) + alpha d^T K d - sum_i W_i h_i [lambda_i - kappa_i (g_i + alpha h_i)]_+
+// (h = G d) is increasing and piecewise linear: 1 when Pi'(1) <= 0 (the full Newton step, always
+// taken when the active set did not change), else its root by bisection. d is zero on the fixed
+// DOFs (u and u + d both satisfy the Dirichlet conditions), so their reactions do not enter.
+double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen::VectorXd& lambda,
+                   const Eigen::VectorXd& u, const Eigen::VectorXd& g, const Eigen::VectorXd& d) {
+  const Eigen::VectorXd Kd = s.K * d, h = c.G * d;
+  const double slope = d.dot(s.K * u - s.f), curvature = d.dot(Kd);
+  const auto derivative = [&](double alpha) {
+    double value = slope + alpha * curvature;
+    for (long i = 0; i < h.size(); ++i)
+      value -= c.weight[i] * h[i] * std::max(0.0, lambda[i] - c.penalty[i] * (g[i] + alpha * h[i]));
+    return value;
+  };
+  // Round-off: the full step's derivative is zero up to the size of its terms.
+  const double size = std::abs(slope) + std::abs(curvature);
+  if (derivative(1.0) <= 1e-9 * size) return 1.0;
+  double lo = 0, hi = 1;
+  for (int k = 0; k < 60 && hi - lo > 1e-15; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (derivative(mid) > 0 ? hi : lo) = mid;
+  }
+  return std::max(hi, 1e-12);
 }
 
 }  // namespace
@@ -75,7 +70,7 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
   Eigen::VectorXd u = solve_with_cholmod(s, ordering, ticking, report, residual);
   ContactOutcome out;
   out.solves = 1;
-  const RowMatrix G = c.G;
+  const SparseMatrix& G = c.G;
   const long Q = c.points();
   double scale = 0;
   for (long d = 0; d < 3 * s.np; ++d) scale = std::max(scale, std::abs(u[d]));
@@ -99,40 +94,29 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
     return changed;
   };
   if (violation() > out.tolerance) {
-    std::vector<Block> blocks = point_blocks(G, c);
-    const SparseMatrix pattern = contact_pattern(s.K, blocks);
-    SparseMatrix K = pattern;
+    const SparseMatrix pattern = contact_pattern(s.K, c.G);
+    const SparseMatrix Gt = c.G.transpose();
+    cli::detail("contact: K has " + std::to_string(s.K.nonZeros()) + " non-zeros, with the contact nodes' couplings " +
+                std::to_string(pattern.nonZeros()));
     std::unique_ptr<CholeskyFactor> factor;
     int inner = 0;
     update_active();
+    Eigen::VectorXd stiffness(Q), force(Q);
     for (;;) {
       if (out.solves >= settings.max_solves)
         throw Error("contact: no convergence in " + std::to_string(out.solves) + " solves (largest penetration or "
                     "open gap under pressure " + three_digits(violation()) + " m, tolerance " +
                     three_digits(out.tolerance) + " m); raise --contact-iterations or the contact penalty");
-      // (K + sum_A kappa w G_q^T G_q) u = f + sum_A w lambda G_q^T
-      std::copy(pattern.valuePtr(), pattern.valuePtr() + pattern.nonZeros(), K.valuePtr());
-      Eigen::VectorXd f = s.f;
-      for (const Block& b : blocks) {
-        const std::size_t n = b.columns.size();
-        Eigen::MatrixXd D = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-        Eigen::VectorXd row(static_cast<Eigen::Index>(n));
-        bool any = false;
-        for (long q = b.first; q < b.end; ++q) {
-          if (!active[static_cast<std::size_t>(q)]) continue;
-          any = true;
-          row.setZero();
-          for (RowMatrix::InnerIterator it(G, static_cast<int>(q)); it; ++it)
-            row[std::lower_bound(b.columns.begin(), b.columns.end(), static_cast<int>(it.col())) - b.columns.begin()] =
-                it.value();
-          D.noalias() += (c.penalty[q] * c.weight[q]) * row * row.transpose();
-          for (RowMatrix::InnerIterator it(G, static_cast<int>(q)); it; ++it)
-            f[it.col()] += c.weight[q] * lambda[q] * it.value();
-        }
-        if (!any) continue;
-        for (std::size_t j = 0, k = 0; j < n; ++j)
-          for (std::size_t i = 0; i < n; ++i, ++k) K.valuePtr()[b.position[k]] += D(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      // (K + sum_A kappa_i W_i G_i^T G_i) u = f + sum_A W_i lambda_i G_i^T
+      for (long q = 0; q < Q; ++q) {
+        const bool on = active[static_cast<std::size_t>(q)];
+        stiffness[q] = on ? c.penalty[q] * c.weight[q] : 0.0;
+        force[q] = on ? c.weight[q] * lambda[q] : 0.0;
       }
+      SparseMatrix K = pattern + SparseMatrix(Gt * (stiffness.asDiagonal() * c.G));
+      if (K.nonZeros() != pattern.nonZeros())  // the penalty term lies inside G^T G's pattern: never
+        throw Error("contact: the penalty term left the contact pattern (internal error)");
+      const Eigen::VectorXd f = s.f + Gt * force;
       const ReducedSystem reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
       if (!factor)
         factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
@@ -141,19 +125,28 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
       if (factor->rcond < 1e-14)
         cli::warn("contact: K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
                   three_digits(factor->rcond) + "): lower the contact penalty");
-      u = expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
-      *residual = relative_residual(K, f, u, reduced);
+      const Eigen::VectorXd next = expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
       ++out.solves;
+      // The Newton step next - u, damped where it would raise the energy of the fixed-lambda
+      // problem (line_search): on a curved cut the undamped active-set steps cycle.
+      const double alpha = line_search(s, c, lambda, u, g, next - u);
+      if (alpha == 1.0) {
+        u = next;
+        *residual = relative_residual(K, f, u, reduced);
+      } else {
+        u += alpha * (next - u);
+        ++out.damped;
+      }
       g = G * u;
       const bool changed = update_active();
       cli::detail("contact: solve " + std::to_string(out.solves) + ": " +
-                  std::to_string(std::count(active.begin(), active.end(), 1)) + " points active" +
-                  (changed ? " (changed)" : "") + ", largest violation " + three_digits(violation()) + " m");
-      if (violation() <= out.tolerance) break;
-      // The inner (semismooth Newton) iteration while A changes; a few times at most: on a curved
-      // cut points near zero gap can flip in and out for ever, and the multiplier update then
-      // makes progress where the inner loop does not (an inexact Uzawa step).
-      if (changed && ++inner < 5) continue;
+                  std::to_string(std::count(active.begin(), active.end(), 1)) + " nodes active" +
+                  (changed ? " (changed)" : "") + (alpha < 1 ? ", step " + three_digits(alpha) : std::string()) +
+                  ", largest violation " + three_digits(violation()) + " m");
+      if (alpha == 1.0 && violation() <= out.tolerance) break;
+      // The inner (semismooth Newton) iteration while A changes, kInnerSolves at most; then the
+      // multiplier update (an inexact Uzawa step) makes the progress.
+      if ((changed || alpha < 1) && ++inner < kInnerSolves) continue;
       inner = 0;
       for (long q = 0; q < Q; ++q) lambda[q] = std::max(0.0, lambda[q] - c.penalty[q] * g[q]);  // Uzawa
       ++out.updates;
@@ -171,16 +164,18 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
     }
     out.max_penetration = std::max(out.max_penetration, -g[q]);
   }
-  cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " points in contact (area " +
+  cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " contact nodes in contact (area " +
             three_digits(out.active_area) + " m^2), " + std::to_string(out.solves) + " solves, " +
             std::to_string(out.updates) + " multiplier updates; largest penetration " +
             three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m), normal force " +
             three_digits(out.force) + " N");
   report["contact"] = Json{{"points", Q},
+                           {"area", Q > 0 ? c.weight.sum() : 0.0},
                            {"active_points", out.active},
                            {"active_area", out.active_area},
                            {"solves", out.solves},
                            {"multiplier_updates", out.updates},
+                           {"damped_steps", out.damped},
                            {"max_penetration", out.max_penetration},
                            {"tolerance", out.tolerance},
                            {"opened_volume", out.opened_volume},

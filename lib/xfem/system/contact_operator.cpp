@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/system/contact_operator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,15 +9,21 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/geometry/tet_shape.h"
 #include "xfem/integrate/cut_face_quadrature.h"
 #include "xfem/system/cut_loads.h"
 
 namespace xfem {
 namespace {
 
+// Relative weight below which a node's share of a tet's face points goes to the tet's other nodes
+// (contact_operator; measured on the organ's sine incision, docs/METHOD.md "Contact").
+constexpr double kSliverWeight = 0.3;
+
 std::string join(const std::string& dir, const char* name) { return (std::filesystem::path(dir) / name).string(); }
 
-// Matrix Market `coordinate real general`, entries column after column (values in round-trip form).
+}  // namespace
+
 void write_general_matrix(const SparseMatrix& A, const std::string& path) {
   write_atomically(path, [&](const std::string& tmp) {
     std::FILE* out = std::fopen(tmp.c_str(), "w");
@@ -31,49 +38,127 @@ void write_general_matrix(const SparseMatrix& A, const std::string& path) {
   });
 }
 
-}  // namespace
-
 ContactOperator contact_operator(const EnrichedMesh& em, const Problem& problem) {
-  ContactOperator c;
+  return contact_operator(em, problem, TetMaterials(problem.model, problem.E, problem.nu));
+}
+
+ContactOperator contact_operator(const EnrichedMesh& em, const Problem& problem, const TetMaterials& materials) {
   const int cuts = cut_count(em);
   check_cut_indices(problem, cuts);
-  std::vector<CutFacePoint> points;
-  for (int k = 0; k < cuts; ++k)
-    if (problem.contact.applies_to(k)) {
-      const std::vector<CutFacePoint> more = cut_face_points(em, k, problem.order);
-      points.insert(points.end(), more.begin(), more.end());
-    }
-  const long Q = static_cast<long>(points.size());
-  c.weight.resize(Q);
-  c.penalty.resize(Q);
-  c.x.resize(Q, 3);
-  c.tet.resize(static_cast<std::size_t>(Q));
-  c.cut.resize(static_cast<std::size_t>(Q));
+  const long np = em.mesh.points.rows();
+  // Row of each (cut, node) in the order first met, the sums W_i and sum w N_i kappa_q, and G's
+  // entries sum_q w_q N_i(x_q) n_q . [[Phi_e]](x_q) (scaled by 1 / W_i at the end).
+  std::vector<int> row_of(static_cast<std::size_t>(cuts) * static_cast<std::size_t>(np), -1);
+  std::vector<long> key;  // k np + node of each row
+  std::vector<double> W, kappa_sum;
   std::vector<Eigen::Triplet<double, int>> entries;
   Eigen::VectorXd jump;
   BasisAt scratch;
-  for (long q = 0; q < Q; ++q) {
-    const CutFacePoint& p = points[static_cast<std::size_t>(q)];
-    basis_jump(em, p.tet, p.cut, p.x, jump, scratch);
-    const long begin = em.offsets[p.tet];
-    for (int e = 0; e < em.size(p.tet); ++e) {
-      if (jump[e] == 0.0) continue;
-      for (int i = 0; i < 3; ++i)
-        if (p.normal[i] != 0.0)
-          entries.emplace_back(static_cast<int>(q), static_cast<int>(3 * em.dofs[begin + e] + i), jump[e] * p.normal[i]);
+  for (int k = 0; k < cuts; ++k) {
+    if (!problem.contact.applies_to(k)) continue;
+    const std::vector<CutFacePoint> points = cut_face_points(em, k, problem.order);
+    // The nodes' raw weights sum_q w_q N_i(x_q), to find the nodes that see only slivers.
+    std::vector<double> raw(static_cast<std::size_t>(np), 0.0);
+    for (const CutFacePoint& p : points) {
+      const Eigen::Vector4d N = tet_shape(em.mesh, p.tet).values(p.x).cwiseMax(0.0);
+      for (int a = 0; a < 4; ++a) raw[static_cast<std::size_t>(em.mesh.tets(p.tet, a))] += p.weight * N[a];
     }
-    double h = 0;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        h = std::max(h, (em.mesh.points.row(em.mesh.tets(p.tet, a)) - em.mesh.points.row(em.mesh.tets(p.tet, b))).norm());
-    c.weight[q] = p.weight;
-    c.penalty[q] = problem.contact.penalty * problem.E / h;
-    c.x.row(q) = p.x.transpose();
-    c.tet[static_cast<std::size_t>(q)] = p.tet;
-    c.cut[static_cast<std::size_t>(q)] = p.cut;
+    // Each node's reference: the largest raw weight among the nodes of the cut tets around it.
+    std::vector<double> reference(static_cast<std::size_t>(np), 0.0);
+    for (const CutFacePoint& p : points) {
+      double largest = 0;
+      for (int a = 0; a < 4; ++a) largest = std::max(largest, raw[static_cast<std::size_t>(em.mesh.tets(p.tet, a))]);
+      for (int a = 0; a < 4; ++a) {
+        double& r = reference[static_cast<std::size_t>(em.mesh.tets(p.tet, a))];
+        r = std::max(r, largest);
+      }
+    }
+    for (std::size_t first = 0; first < points.size();) {
+      const int t = points[first].tet;
+      std::size_t end = first;
+      while (end < points.size() && points[end].tet == t) ++end;
+      const TetShape shape = tet_shape(em.mesh, t);
+      double h = 0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          h = std::max(h, (em.mesh.points.row(em.mesh.tets(t, a)) - em.mesh.points.row(em.mesh.tets(t, b))).norm());
+      // The penalty of the tet's own material (problem.json `materials` per region).
+      const double kappa = problem.contact.penalty * materials.E[static_cast<std::size_t>(materials.index(t))] / h;
+      const int size = em.size(t);
+      const long begin = em.offsets[t];
+      Eigen::MatrixXd R = Eigen::MatrixXd::Zero(4, 3 * size);  // row a: node a's combination of the tet's DOFs
+      Eigen::Vector4d Wt = Eigen::Vector4d::Zero();
+      // A node whose raw weight is below kSliverWeight times its reference sees only slivers of
+      // the cut: a condition of its own would hold next to nothing (its penalty kappa W ~ 0) and
+      // its multiplier would not converge. Its share of the tet's points goes to the tet's other
+      // nodes, in proportion to their shape functions (the shares still sum to 1: a uniform
+      // pressure is still carried exactly); all to the node of largest raw weight when the tet
+      // has only such nodes.
+      Eigen::Vector4d keep;
+      int biggest = 0;
+      for (int a = 0; a < 4; ++a) {
+        const std::size_t node = static_cast<std::size_t>(em.mesh.tets(t, a));
+        keep[a] = raw[node] >= kSliverWeight * reference[node] ? 1.0 : 0.0;
+        if (raw[node] > raw[static_cast<std::size_t>(em.mesh.tets(t, biggest))]) biggest = a;
+      }
+      for (std::size_t q = first; q < end; ++q) {
+        const CutFacePoint& p = points[q];
+        basis_jump(em, t, k, p.x, jump, scratch);
+        Eigen::Vector4d N = shape.values(p.x).cwiseMax(0.0).cwiseProduct(keep);  // >= 0: the point lies in the tet
+        if (N.sum() > 0) N /= N.sum();
+        else N = Eigen::Vector4d::Unit(biggest);  // the point sits on the sliver nodes' face: all to the biggest
+        Wt += p.weight * N;
+        for (int e = 0; e < size; ++e) {
+          if (jump[e] == 0.0) continue;
+          for (int i = 0; i < 3; ++i) R.col(3 * e + i) += (p.weight * jump[e] * p.normal[i]) * N;
+        }
+      }
+      for (int a = 0; a < 4; ++a) {
+        if (!(Wt[a] > 0)) continue;
+        const long node = em.mesh.tets(t, a);
+        int& row = row_of[static_cast<std::size_t>(k * np + node)];
+        if (row < 0) {
+          row = static_cast<int>(key.size());
+          key.push_back(k * np + node);
+          W.push_back(0.0);
+          kappa_sum.push_back(0.0);
+        }
+        W[static_cast<std::size_t>(row)] += Wt[a];
+        kappa_sum[static_cast<std::size_t>(row)] += Wt[a] * kappa;
+        for (int e = 0; e < size; ++e)
+          for (int i = 0; i < 3; ++i)
+            if (R(a, 3 * e + i) != 0.0)
+              entries.emplace_back(row, static_cast<int>(3 * em.dofs[begin + e] + i), R(a, 3 * e + i));
+      }
+      first = end;
+    }
   }
-  c.G.resize(Q, 3 * em.n);
-  c.G.setFromTriplets(entries.begin(), entries.end());  // a DOF appears once per point: no sums
+  // Rows sorted by cut, then node: the order does not depend on how the tets were visited.
+  const long M = static_cast<long>(key.size());
+  std::vector<int> order(static_cast<std::size_t>(M)), rank(static_cast<std::size_t>(M));
+  for (int i = 0; i < M; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key[static_cast<std::size_t>(a)] < key[static_cast<std::size_t>(b)]; });
+  for (int i = 0; i < M; ++i) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = i;
+  for (auto& entry : entries) {
+    const int r = rank[static_cast<std::size_t>(entry.row())];
+    entry = Eigen::Triplet<double, int>(r, entry.col(), entry.value() / W[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])]);
+  }
+  ContactOperator c;
+  c.weight.resize(M);
+  c.penalty.resize(M);
+  c.x.resize(M, 3);
+  c.node.resize(static_cast<std::size_t>(M));
+  c.cut.resize(static_cast<std::size_t>(M));
+  for (long i = 0; i < M; ++i) {
+    const std::size_t old = static_cast<std::size_t>(order[static_cast<std::size_t>(i)]);
+    c.weight[i] = W[old];
+    c.penalty[i] = kappa_sum[old] / W[old];
+    c.node[static_cast<std::size_t>(i)] = static_cast<int>(key[old] % np);
+    c.cut[static_cast<std::size_t>(i)] = static_cast<int>(key[old] / np);
+    c.x.row(i) = em.mesh.points.row(c.node[static_cast<std::size_t>(i)]);
+  }
+  c.G.resize(M, 3 * em.n);
+  c.G.setFromTriplets(entries.begin(), entries.end());  // sums the tets around each node
   c.G.makeCompressed();
   return c;
 }
@@ -85,7 +170,7 @@ void write_contact_operator(const ContactOperator& c, const std::string& dir) {
   std::vector<Eigen::Triplet<double, int>> entries;
   for (long q = 0; q < Q; ++q) {
     const double row[7] = {c.weight[q], c.penalty[q], c.x(q, 0), c.x(q, 1), c.x(q, 2),
-                           static_cast<double>(c.tet[static_cast<std::size_t>(q)]),
+                           static_cast<double>(c.node[static_cast<std::size_t>(q)]),
                            static_cast<double>(c.cut[static_cast<std::size_t>(q)])};
     for (int j = 0; j < 7; ++j) entries.emplace_back(static_cast<int>(q), j, row[j]);
   }
@@ -108,12 +193,12 @@ ContactOperator read_contact_operator(const std::string& dir, long dofs) {
   c.weight = dense.col(0);
   c.penalty = dense.col(1);
   c.x = dense.middleCols(2, 3);
-  c.tet.resize(static_cast<std::size_t>(Q));
+  c.node.resize(static_cast<std::size_t>(Q));
   c.cut.resize(static_cast<std::size_t>(Q));
   for (long q = 0; q < Q; ++q) {
     if (!(c.weight[q] > 0) || !(c.penalty[q] > 0) || !std::isfinite(c.weight[q]) || !std::isfinite(c.penalty[q]))
       throw Error(points_path + ": point " + std::to_string(q + 1) + " has a weight or penalty that is not positive");
-    c.tet[static_cast<std::size_t>(q)] = static_cast<int>(dense(q, 5));
+    c.node[static_cast<std::size_t>(q)] = static_cast<int>(dense(q, 5));
     c.cut[static_cast<std::size_t>(q)] = static_cast<int>(dense(q, 6));
   }
   return c;

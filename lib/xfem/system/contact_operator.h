@@ -5,38 +5,53 @@
 #include <vector>
 
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/integrate/tet_materials.h"
 #include "xfem/io/matrix_market.h"
 #include "xfem/system/problem.h"
 
 namespace xfem {
 
 /// What xfem-solve needs for frictionless contact between a cut's faces (docs/METHOD.md
-/// "Contact"; docs/FORMATS.md "system/"): the gap g_q = n_q . [[u]](x_q) at every integration
-/// point q of the faces of the cuts in contact, as a row of a sparse matrix acting on u (3N).
-/// The gap is measured in the reference configuration (small sliding): both faces start together.
+/// "Contact"; docs/FORMATS.md "system/"): one contact condition per mesh node i whose shape
+/// function's support meets the faces of a cut k in contact (a "contact node"), on the weighted
+/// (mortar-like) gap
+///   g_i = sum_q w_q N_i(x_q) g_q / W_i,   W_i = sum_q w_q N_i(x_q),
+/// the sums over the integration points q of cut k's faces in the tets around node i (N_i the
+/// linear shape function, g_q = n_q . [[u]](x_q) the normal gap at the point): a length, the gap
+/// averaged over the part of the cut near node i. Row i of G holds it as a combination of the
+/// DOFs of every cut tet around the node. The gap is measured in the reference configuration
+/// (small sliding): both faces start together.
 struct ContactOperator {
-  SparseMatrix G;                  ///< Q x 3N: g = G u, metres; row q holds n_q . [[Phi]](x_q)
-  Eigen::VectorXd weight;          ///< Q: the point's area, m^2
-  Eigen::VectorXd penalty;         ///< Q: kappa_q = problem.contact.penalty E / h_t, Pa/m (h_t: the tet's longest edge)
-  Eigen::MatrixXd x;               ///< Q x 3: positions, metres
-  std::vector<int> tet, cut;       ///< Q: the mesh tet and the cut of each point
+  SparseMatrix G;                  ///< M x 3N: g = G u, metres; row i the weighted gap of contact node i
+  Eigen::VectorXd weight;          ///< M: W_i, the area the node stands for, m^2 (sum: the cuts' area)
+  Eigen::VectorXd penalty;         ///< M: kappa_i, Pa/m: the points' kappa_q = penalty E_t / h_t averaged with w_q N_i
+  Eigen::MatrixXd x;               ///< M x 3: the node's position, metres
+  std::vector<int> node, cut;      ///< M: the mesh node and the cut of each condition
   long points() const { return static_cast<long>(weight.size()); }
 };
 
-/// The file names in a system directory: contact_gap.mtx (G, `coordinate real general`, Q x 3N)
-/// and contact_points.mtx (`coordinate real general`, Q x 7: weight, penalty, x, y, z, tet, cut).
+/// The file names in a system directory: contact_gap.mtx (G, `coordinate real general`, M x 3N)
+/// and contact_points.mtx (`coordinate real general`, M x 7: weight, penalty, x, y, z, node, cut).
 constexpr const char* kContactGapFile = "contact_gap.mtx";
 constexpr const char* kContactPointsFile = "contact_points.mtx";
 
-/// The gap operator of the cuts problem.contact applies to, with problem.order's face rule
-/// (cut_face_points). Rows of points whose jump is zero on every DOF (none in practice) are kept:
-/// their gap is 0 whatever u. Throws xfem::Error for a contact cut the mesh does not have.
+/// The contact conditions of the cuts problem.contact applies to, from problem.order's face rule
+/// (cut_face_points), conditions sorted by cut, then node. kappa_q uses the material of the
+/// point's tet (`materials`, problem.json `materials` per region: E of that tet's law). Nodes whose
+/// W_i is zero (the cut passes through the node's support only where N_i = 0) get no condition.
+/// Throws xfem::Error for a contact cut the mesh does not have.
+ContactOperator contact_operator(const EnrichedMesh& em, const Problem& problem, const TetMaterials& materials);
+/// The same with problem.json's `material` everywhere.
 ContactOperator contact_operator(const EnrichedMesh& em, const Problem& problem);
 
 /// Writes both files into `dir` (atomically each); reads them back, checking their sizes against
 /// each other and `dofs` = 3N (xfem::Error naming the file).
 void write_contact_operator(const ContactOperator& c, const std::string& dir);
 ContactOperator read_contact_operator(const std::string& dir, long dofs);
+
+/// Writes `A` in Matrix Market `coordinate real general` form, every stored entry (explicit zeros
+/// too), column after column, values in round-trip form. Atomic.
+void write_general_matrix(const SparseMatrix& A, const std::string& path);
 
 /// Whether the system directory `dir` holds a contact operator.
 bool has_contact_operator(const std::string& dir);
