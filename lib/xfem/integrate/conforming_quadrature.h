@@ -106,9 +106,9 @@ struct TetRuleLayout {
   ///  - Bisection as uniform(n) from order 4 up, none below (at order 3 it moved the error of
   ///    uniform(3) by nothing measurable and cost 1.8x the points).
   static TetRuleLayout of_order(int n);
-  /// The graded rule (integration.rule "graded"): the order-3 Duffy rules on pieces with a vertex on
-  /// the front; on the others a plain collapsed rule of 4 (2 farther than their size from the
-  /// front) points per direction, bisected once while the front is nearer than half their size.
+  /// The graded rule (integration.rule "graded"): of_order(3) with 3 points in the angle around the
+  /// front, the pieces with a vertex on the front bisected once where the front passes close to the
+  /// part they resolve, the others once while the front is nearer than half their size.
   static TetRuleLayout graded();
   /// The order whose consistent shift the graded rule takes (consistent_face_points: 4 per direction).
   static constexpr int graded_consistent_order = 3;
