@@ -2,12 +2,15 @@
 // Accuracy and cost of the branch functions' volume rule (issue 35): for every tet with branch DOFs
 // of an enriched mesh, the branch x branch block of its stiffness (closed_form_stiffness.h) with
 // each rule asked for, against the same block integrated with the uniform rule of order REF
-// (default 8): relative Frobenius error per tet (worst, median, 90th percentile), points per tet
+// (default 8; or any RULE as below): relative Frobenius error per tet (worst, median, 90th percentile), points per tet
 // (mean, max) and the time to integrate these tets on one thread (median of RUNS, alternated).
-// Usage: branch_rule_accuracy ENRICHED.vtu CUT [--reference N] [--runs N] RULE...
-//   RULE: uniform:N (the conforming rule of order N, integration.rule "conforming" --order N) or
+// Usage: branch_rule_accuracy ENRICHED.vtu CUT [--reference N|RULE] [--runs N] RULE...
+//   RULE: uniform:N (the conforming rule of order N before issue 35, n points per direction everywhere and
+//         on the faces; N >= 2) or order:N (TetRuleLayout::of_order(N): integration.rule "conforming" --order N) or
 //         graded (TetRuleLayout::graded(), integration.rule "graded") or
-//         layout:radial,along,across,far,distant,distant_ratio,near_levels,far_levels[,consistent[,far_squared]]
+//         layout:radial,along,across,far,distant,distant_ratio,near_levels,far_levels[,consistent[,far_squared
+//                [,remote,remote_ratio]]] (consistent: the order whose consistent shift is taken, faces
+//                consistent_face_points(consistent) per direction)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -36,21 +39,26 @@ Rule parse(const std::string& s) {
   if (s.rfind("uniform:", 0) == 0) {
     const int n = std::stoi(s.substr(8));
     r.layout = xfem::TetRuleLayout::uniform(n);
-    r.consistent = n;
+    r.consistent = n - 1;  // faces consistent_face_points(n - 1) = n per direction, as before issue 35
   } else if (s == "graded") {
     r.layout = xfem::TetRuleLayout::graded();
     r.consistent = xfem::TetRuleLayout::graded_consistent_order;
+  } else if (s.rfind("order:", 0) == 0) {  // the rule of order N (TetRuleLayout::of_order, the default's family)
+    const int n = std::stoi(s.substr(6));
+    r.layout = xfem::TetRuleLayout::of_order(n);
+    r.consistent = n;
   } else if (s.rfind("layout:", 0) == 0) {
     std::stringstream in(s.substr(7));
     std::string item;
     std::vector<double> v;
     while (std::getline(in, item, ',')) v.push_back(std::stod(item));
-    if (v.size() < 8 || v.size() > 10) throw std::runtime_error("layout needs 8 to 10 numbers: " + s);
+    if (v.size() < 8 || v.size() > 12) throw std::runtime_error("layout needs 8 to 12 numbers: " + s);
     xfem::TetRuleLayout& l = r.layout;
     l.radial = int(v[0]), l.along = int(v[1]), l.across = int(v[2]), l.far = int(v[3]), l.distant = int(v[4]);
     l.distant_ratio = v[5], l.near_levels = int(v[6]), l.far_levels = int(v[7]);
     if (v.size() >= 9) r.consistent = int(v[8]);
     if (v.size() >= 10) l.far_squared = v[9] != 0;
+    if (v.size() >= 12) l.remote = int(v[10]), l.remote_ratio = v[11];
   } else {
     throw std::runtime_error("unknown rule " + s);
   }
@@ -79,14 +87,18 @@ double quantile(std::vector<double> v, double q) {
 int main(int argc, char** argv) {
   try {
     if (argc < 4) {
-      std::fprintf(stderr, "usage: branch_rule_accuracy ENRICHED.vtu CUT [--reference N] [--runs N] RULE...\n");
+      std::fprintf(stderr, "usage: branch_rule_accuracy ENRICHED.vtu CUT [--reference N|RULE] [--runs N] RULE...\n");
       return 2;
     }
-    int reference = 8, runs = 3;
+    std::string reference = "uniform:8";  // the order-8 rule before issue 35
+    int runs = 3;
     std::vector<Rule> rules;
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--reference" && i + 1 < argc) reference = std::atoi(argv[++i]);
+      if (a == "--reference" && i + 1 < argc) {
+        reference = argv[++i];
+        if (reference.find(':') == std::string::npos && reference != "graded") reference = "uniform:" + reference;
+      }
       else if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
       else rules.push_back(parse(a));
     }
@@ -100,14 +112,14 @@ int main(int argc, char** argv) {
     {
       xfem::PointRule points;
       Eigen::MatrixXd k;
-      const Rule r = parse("uniform:" + std::to_string(reference));
+      const Rule r = parse(reference);
       for (std::size_t i = 0; i < tets.size(); ++i) {
         xfem::conforming_rule(em, splits, tets[i], r.layout, points);
         xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, r.consistent);
         ref[i] = branch_block(em, tets[i], k);
       }
     }
-    std::printf("%zu tets with branch DOFs; reference: uniform order %d\n", tets.size(), reference);
+    std::printf("%zu tets with branch DOFs; reference: %s\n", tets.size(), reference.c_str());
     std::printf("%-40s %10s %10s %10s %8s %8s %9s\n", "rule", "worst", "median", "p90", "pts/tet", "max pts",
                 "time s");
     std::vector<std::vector<double>> times(rules.size());

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Cost of the conforming rule's variants on one enriched mesh (issue 35): xfem-assemble's whole wall
-# time and its own "enriched tets" time for --rule pieces (every block from the points, the rule
-# before issue 35), conforming (closed-form blocks, the default) and graded, runs alternated,
-# medians printed with the load. Usage: bench/closed_form_rules.sh BIN ENRICHED.vtu CUT PROBLEM [RUNS]
+# time and its own "enriched tets" time for --rule uniform (the points of order 3 before issue 35,
+# closed-form blocks), pieces (every block from the points), conforming (the default) and graded,
+# runs alternated, medians printed with the load; ratios against uniform. Usage: bench/closed_form_rules.sh BIN ENRICHED.vtu CUT PROBLEM [RUNS]
 #   e.g. bench/closed_form_rules.sh build/tools organ-enriched.vtu cut.vtp pipelines/organ/problem.json 7
 set -euo pipefail
 bin=$1 enriched=$2 cut=$3 problem=$4 runs=${5:-7}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 declare -A wall enr
-rules=("--rule pieces" "--rule conforming" "--rule graded")
+rules=("--rule uniform" "--rule pieces" "--rule conforming" "--rule graded")
 echo "load before: $(uptime | sed 's/.*load average: //')"
 for ((i = 0; i < runs; ++i)); do
   for r in "${rules[@]}"; do
@@ -20,10 +20,10 @@ for ((i = 0; i < runs; ++i)); do
   done
 done
 median() { tr ' ' '\n' | grep . | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
-base=$(echo ${enr["--rule pieces"]} | median)
+base=$(echo ${enr["--rule uniform"]} | median)
 for r in "${rules[@]}"; do
   m=$(echo ${enr[$r]} | median); w=$(echo ${wall[$r]} | median)
   awk -v r="$r" -v m="$m" -v w="$w" -v b="$base" \
-    'BEGIN {printf "%-20s xfem-assemble median %6.3f s, enriched tets %6.3f s (%.2fx pieces)\n", r, w, m, m / b}'
+    'BEGIN {printf "%-20s xfem-assemble median %6.3f s, enriched tets %6.3f s (%.2fx uniform)\n", r, w, m, m / b}'
 done
 echo "load after: $(uptime | sed 's/.*load average: //')"

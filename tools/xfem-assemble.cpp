@@ -13,16 +13,13 @@
 #include "xfem/system/linear_system.h"
 #include "xfem/system/problem.h"
 #include "xfem/system/integration_cost.h"
+#include "xfem/system/integration_request.h"
 #include "xfem/system/solution_provenance.h"
 #include "xfem/system/reactions.h"
 #include "xfem/core/version.h"
 
 namespace {
-std::string fixed3(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  return buf;
-}
+std::string fixed3(double v) { char b[32]; std::snprintf(b, sizeof b, "%.3f", v); return b; }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -41,8 +38,8 @@ int main(int argc, char** argv) {
       "xfem-assemble out/enriched.vtu --cut cut.vtp --problem problem.json -o out/system");
   std::string input, problem_path, output;
   std::vector<std::string> cut_paths;
-  int points = 0, refine = -1, order = 0;
-  std::string rule, format = "petsc";
+  xfem::IntegrationRequest request;
+  std::string format = "petsc";
   auto& app = tool->app;
   app.add_option("enriched", input, "xfem-enrich output (.vtu)")->required();
   app.add_option("-c,--cut", cut_paths, "the cut surface given to xfem-classify (.vtp/.vtu/.vtk/.stl/.obj/.off/.msh); "
@@ -52,25 +49,27 @@ int main(int argc, char** argv) {
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material, materials (one "
                                                "per region of the mesh), integration, dirichlet, neumann, body_force, "
                                                "cut_loads, contact)")->required();
-  app.add_option("--points", points, "the paper's oversampling rule (implies --rule oversampling): points "
+  app.add_option("--points", request.points, "the paper's oversampling rule (implies --rule oversampling): points "
                                      "requested per enriched tet, which is split into m^3 sub-tets, m the smallest "
                                      "with m^3 > points, one centroid point each (default: problem.json's "
                                      "integration.points, else 30 as in the paper)")
       ->check(xfem::cli::range(1, 100000));
-  app.add_option("--refine", refine, "oversampling rule (implies --rule oversampling): in cut tets, split sub-tets "
+  app.add_option("--refine", request.refine, "oversampling rule (implies --rule oversampling): in cut tets, split sub-tets "
                                      "the cut crosses into 8, up to this many times "
                                      "(0 = the paper's uniform rule; default: problem.json's integration.refine, "
                                      "else 0); small pieces cut off a tet then get integration points")
       ->check(xfem::cli::range(0, 8));
-  app.add_option("--rule", rule, "integration of tets with enriched DOFs: conforming (the default: cut elements "
+  app.add_option("--rule", request.rule, "integration of tets with enriched DOFs: conforming (the default: cut elements "
                                  "split exactly along the cut, one point per piece for the sign enrichment, Gauss "
                                  "rules collapsed onto the cut front where branch functions live, the blocks without them in "
                                  "closed form), graded (the same, the branch functions' points graded toward the front, "
-                                 "--order unused), pieces (the same points for every block, as before issue 35) or "
+                                 "--order unused), pieces (the same points for every block), uniform (as conforming "
+                                 "with the points of order n before issue 35: n per direction everywhere, for comparisons) or "
                                  "oversampling (the paper's; default: problem.json's integration.rule, else conforming)")
-      ->check(CLI::IsMember({"oversampling", "conforming", "graded", "pieces"}));
-  app.add_option("--order", order, "conforming rule: Gauss points per direction of each sub-tet, n^3 points each "
-                                   "(default: problem.json's integration.order, else 3)")
+      ->check(CLI::IsMember({"oversampling", "conforming", "graded", "pieces", "uniform"}));
+  app.add_option("--order", request.order, "conforming rule: its order n, Gauss points per direction of the sub-tets (n in the "
+                                           "distance to the front, n + 1 on pieces near it, fewer along it and far from it; "
+                                           "docs/METHOD.md) (default: problem.json's integration.order, else 3)")
       ->check(xfem::cli::range(1, 20));
   app.add_option("-o,--output", output, "system directory (created, or replaced as a whole when it holds an older "
                                        "system)")->required();
@@ -87,31 +86,17 @@ int main(int argc, char** argv) {
     xfem::Problem problem = xfem::read_problem(problem_path);
     // K u = f is the small-strain model's: another model needs xfem-newton's nonlinear solve.
     xfem::require_linear_material(problem, "xfem-assemble writes the linear system of the small-strain model");
-    if (!rule.empty()) {
-      problem.rule = rule == "oversampling" ? xfem::Problem::Rule::Oversampling : xfem::Problem::Rule::Conforming;
-      problem.closed_form = rule != "pieces";
-      problem.graded = rule == "graded";
-    }
-    else if (points > 0 || refine >= 0) problem.rule = xfem::Problem::Rule::Oversampling;
-    if (order > 0) problem.order = order;
+    xfem::apply_integration_request(request, problem);
+    const int points = request.points, refine = request.refine;
     const bool conforming = problem.rule == xfem::Problem::Rule::Conforming;
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);
-    if (points == 0) points = problem.points;
-    if (refine < 0) refine = problem.refine;
-    long enriched_tets = 0;  // cost guard: integration points of the tets with enriched DOFs
-    const double estimate = xfem::integration_points_estimate(em, problem, points, refine, &enriched_tets);
-    if (estimate > 2e8 && !allow_large)
-      throw xfem::Error(input + ": about " + xfem::short_number(estimate) + " integration points in " +
-                        std::to_string(enriched_tets) + " enriched tets (limit 2e8: lower --points/--refine/--order, "
-                        "or give --allow-large)");
+    const double estimate = xfem::check_integration_cost(em, problem, points, refine, allow_large, input);
     if (estimate > 1e7) xfem::cli::info("about " + xfem::short_number(estimate) + " integration points: this takes minutes");
     xfem::cli::detail("E " + std::to_string(problem.E) + " Pa, nu " + std::to_string(problem.nu) + ", " +
                       std::to_string(problem.dirichlet.size()) + " Dirichlet and " +
                       std::to_string(problem.neumann.size()) + " Neumann conditions, " +
-                      (conforming ? problem.graded ? std::string("--rule graded")
-                                  : std::string(problem.closed_form ? "--rule conforming" : "--rule pieces") + " --order " + std::to_string(problem.order)
-                                  : "--points " + std::to_string(points) + ", --refine " + std::to_string(refine)));
+                      xfem::describe_integration(problem, points, refine));
     const double read = xfem::cli::now() - start;
 
     xfem::AssemblyStats s;

@@ -48,7 +48,8 @@ c = json.load(open('penny_pressure/solve.json'))['contact']
 exact = 16 * (1 - nu**2) * sigma * 0.3**3 / (3 * E)
 print("crack volume %.5g m^3, Sneddon %.5g (%.1f %%); contact points %d, active %d" %
       (c['opened_volume'], exact, 100 * (c['opened_volume'] / exact - 1), c['points'], c['active_points']))
-assert abs(c['opened_volume'] - 0.11416) < 0.005 * 0.11416 and c['opened_volume'] < exact
+# 0.11416 with the rule of order 3 before issue 35 (-12.9 % of Sneddon's on this 8^3 mesh); 0.11558 since.
+assert abs(c['opened_volume'] - 0.11558) < 0.005 * 0.11558 and c['opened_volume'] < exact
 assert c['active_points'] == 0 and c['solves'] == 1
 PY
 # Bad inputs: one line each, nothing written.

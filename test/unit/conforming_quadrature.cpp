@@ -130,6 +130,34 @@ TEST_CASE("conforming_quadrature: the plain collapsed rule (s = sigma) integrate
   CHECK(sum(graded.weights) == Approx(volume).epsilon(1e-13));
 }
 
+TEST_CASE("conforming_quadrature: the rule of order n lays out its points by the piece's place to the front",
+          "[conforming_quadrature]") {
+  // TetRuleLayout::of_order(3), what conforming_rule(..., 3, ...) uses (issue 35): an edge on the
+  // front 3 x 1 x 2 points, a vertex on it 3 x 2 x 2, a piece without one 4^3 (plain collapse)
+  // within its longest edge of the front and 2^3 beyond; no bisection at order 3.
+  const xfem::TetRuleLayout l = xfem::TetRuleLayout::of_order(3);
+  CHECK((l.radial == 3 && l.along == 1 && l.across == 2 && l.far == 4 && l.distant == 2 && !l.far_squared));
+  CHECK((l.near_levels == 0 && l.far_levels == 0 && l.distant_ratio == 1.0));
+  CHECK(xfem::consistent_face_points(3) == 4);
+  // From order 4 up the bisection depth of the rule before (uniform(n)).
+  CHECK(xfem::TetRuleLayout::of_order(5).near_levels == xfem::TetRuleLayout::uniform(5).near_levels);
+  const V o(0, 0, 0), ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  const double volume = 1.0 / 6.0;
+  auto points = [&](const xfem::CrackFront& front) {
+    xfem::PointRule r;
+    xfem::append_tet_rule({o, ex, ey, ez}, front, 3, 1, r);
+    CHECK(sum(r.weights) == Approx(volume).epsilon(1e-13));
+    return r.size();
+  };
+  // Front the z axis: through edge o-ez.
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{0, 0, 2}, {0, 0, -1}, {1, 0, 0}}})) == 6);
+  // Through vertex o only (a line along (1, 1, 1) away from the tet: x = -t (1, 1, 1)).
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-1, -1, -1}, {0, 0, 0}, V(1, -1, 0).normalized()}})) == 12);
+  // Near (0.5 from the tet, longest edge sqrt 2) and far (5 away) without touching it.
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-0.5, 0, -1}, {-0.5, 0, 2}, {1, 0, 0}}})) == 64);
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-5, 0, -1}, {-5, 0, 2}, {1, 0, 0}}})) == 8);
+}
+
 TEST_CASE("conforming_quadrature: 1/r to a front through an edge or a vertex converges to the closed form",
           "[conforming_quadrature]") {
   // Tet (0, e_x, e_y, e_z), front the z axis (through edge 0-3): integral of 1/r, r = sqrt(x^2 + y^2),
@@ -145,7 +173,8 @@ TEST_CASE("conforming_quadrature: 1/r to a front through an edge or a vertex con
   SECTION("edge on the front, vertices in any order") {
     for (const auto& p : {std::array<V, 4>{o, ex, ey, ez}, std::array<V, 4>{ey, ez, ex, o}}) {
       xfem::PointRule r;
-      xfem::append_tet_rule(p, front, 6, 0, r);
+      // Order 7 (of_order: 6 points in the angle; the order-6 rule's 5 give 1.9e-8).
+      xfem::append_tet_rule(p, front, 7, 0, r);
       CHECK(std::abs(integral(r) - exact) < 1e-8 * exact);
       CHECK(sum(r.weights) == Approx(1.0 / 6).epsilon(1e-13));
     }
@@ -153,8 +182,8 @@ TEST_CASE("conforming_quadrature: 1/r to a front through an edge or a vertex con
   SECTION("split into a tet with only the vertex 0 on the front and one with the edge 0-3 on it") {
     const V m = 0.5 * (ex + ez);
     xfem::PointRule vertex_part, edge_part;
-    xfem::append_tet_rule({o, ex, ey, m}, front, 6, 0, vertex_part);
-    xfem::append_tet_rule({o, m, ey, ez}, front, 6, 0, edge_part);
+    xfem::append_tet_rule({o, ex, ey, m}, front, 7, 0, vertex_part);
+    xfem::append_tet_rule({o, m, ey, ez}, front, 7, 0, edge_part);
     CHECK(std::abs(integral(vertex_part) + integral(edge_part) - exact) < 1e-8 * exact);
     CHECK(sum(vertex_part.weights) + sum(edge_part.weights) == Approx(1.0 / 6).epsilon(1e-13));
   }

@@ -76,8 +76,9 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
                         const Eigen::Vector3d& d, int radial, int across, int side, PointRule& out);
 
 /// How append_tet_rule lays out its points: Gauss points per direction of each kind of piece and
-/// how deep pieces near the front are bisected. uniform(n) is the rule of order n (n in every
-/// direction; bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it).
+/// how deep pieces near the front are bisected. of_order(n) is the rule of order n, what every
+/// caller of conforming_rule(..., n, ...) gets (the default n = 3); uniform(n) the rule of order n
+/// before issue 35 (n in every direction, kept for comparisons).
 struct TetRuleLayout {
   int radial = 3;       ///< pieces with an edge / a vertex on the front: points in the distance to it (sigma)
   int along = 3;        ///< edge on the front: points along it
@@ -85,17 +86,39 @@ struct TetRuleLayout {
   int far = 3;          ///< pieces without a vertex on the front: n^3 edge rule at the edge nearest to it
   int distant = 3;      ///< ... those farther than distant_ratio times their longest edge from the front
   double distant_ratio = 1e300;
+  int remote = 3;       ///< ... those farther than remote_ratio times their longest edge
+  double remote_ratio = 1e300;
   int near_levels = 1;  ///< bisection levels at most, pieces with a vertex on the front
   int far_levels = 0;   ///< ... without one
   bool far_squared = true;  ///< pieces without a vertex on the front: s = sigma^2 (true) or sigma (append_edge_rule)
+  /// The rule of order n before issue 35: n points in every direction, s = sigma^2 everywhere,
+  /// bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it.
   static TetRuleLayout uniform(int n);
-  /// The graded rule (integration.rule "graded"): the order-3 Duffy rules on pieces with a vertex on
-  /// the front; on the others a plain collapsed rule of 4 (2 farther than their size from the
-  /// front) points per direction, bisected once while the front is nearer than half their size.
+  /// The rule of order n (conforming_rule, integration.order; issue 35, measured in
+  /// docs/PERFORMANCE.md): where the error of uniform(n) is and where its points are wasted.
+  ///  - Pieces without a vertex on the front (bounded integrand, the front near): a plain collapsed
+  ///    rule (s = sigma) of n + 1 points per direction at the edge nearest to the front, n - 1
+  ///    (at least 2) when the front is farther than the piece's longest edge. The sigma^2 map of
+  ///    uniform(n) made a cubic integrand degree 11 in sigma; this is where its error was.
+  ///  - Pieces with an edge on the front: n points in sigma, n - 2 (at least 1) along the front
+  ///    (the integrand is smooth along it, the front segments short), n - 1 (at least 2) in the
+  ///    angle; with a vertex on it: n in sigma, n - 1 (at least 2) in each other direction.
+  ///  - Bisection as uniform(n) from order 4 up, none below (at order 3 it moved the error of
+  ///    uniform(3) by nothing measurable and cost 1.8x the points).
+  static TetRuleLayout of_order(int n);
+  /// The graded rule (integration.rule "graded"): of_order(3) with 3 points in the angle around the
+  /// front, the pieces with a vertex on the front bisected once where the front passes close to the
+  /// part they resolve, the others once while the front is nearer than half their size.
   static TetRuleLayout graded();
-  /// Gauss points per direction of the graded rule's face integrals (consistent_gradients.h).
-  static constexpr int graded_consistent_order = 4;
+  /// The order whose consistent shift the graded rule takes (consistent_face_points: 4 per direction).
+  static constexpr int graded_consistent_order = 3;
 };
+
+/// Gauss points per direction on the faces for the consistent shift of a rule of order n
+/// (sampled_gradients, branch_gradient_integrals): n + 1. The face integrands are bounded but
+/// carry the front's sqrt(r): at order 3, 4 face points instead of 3 take the median error of the
+/// branch x branch block from 4.3e-4 to 6.7e-5 (beam, docs/PERFORMANCE.md); more change little.
+int consistent_face_points(int order);
 
 /// The rule for one tet p[0..3] near `front` (may be empty): the vertices within 1e-6 of the tet's
 /// longest edge of the front decide it: two -> edge rule on them, one -> vertex rule at it, none ->
@@ -110,12 +133,12 @@ struct TetRuleLayout {
 /// final tet with `side`.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out);
-/// The same with any layout (append_tet_rule(p, front, n, ...) is TetRuleLayout::uniform(n)).
+/// The same with any layout (append_tet_rule(p, front, n, ...) is TetRuleLayout::of_order(n)).
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
                      int side, PointRule& out);
 
 /// The conforming rule of tet t: per sub-tet of a cut element (side = the sub-tet's side), or the
-/// tet itself for an uncut one (side 0), each by append_tet_rule with order n.
+/// tet itself for an uncut one (side 0), each by append_tet_rule with TetRuleLayout::of_order(n).
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out);
 /// The same with any layout of the front-singular rules (TetRuleLayout).
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, const TetRuleLayout& layout,
@@ -124,7 +147,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 /// The gradients of tet t's enriched basis at the points of `rule` (q x 3|C|: row p, column 3c + a
 /// holds dPhi_c/dx_a at point p, the order of its C), evaluated with each point's side; with
 /// consistent_order > 0 the branch functions' gradients shifted as element_stiffness_at_points
-/// says. What every element quantity integrated on the rule is built from: the linear stiffness
+/// says (the shift of the rule of that order: consistent_face_points(consistent_order) per direction). What every element quantity integrated on the rule is built from: the linear stiffness
 /// below, the nonlinear forces and tangent (element_forces.h).
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients);
@@ -133,8 +156,8 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
 /// (the enriched basis evaluated at each point with the point's side). Same layout as
 /// element_stiffness of element_stiffness.h. With consistent_order > 0 the branch functions'
 /// gradients are first shifted per element so that the rule integrates them exactly as the
-/// divergence theorem does (branch_gradient_integrals, consistent_gradients.h, with that many
-/// Gauss points per direction on the faces): the linear patch test then holds to round-off.
+/// divergence theorem does (branch_gradient_integrals, consistent_gradients.h, with
+/// consistent_face_points(consistent_order) Gauss points per direction on the faces): the linear patch test then holds to round-off.
 /// `face_cache` (optional): face integrals shared between neighbouring tets (consistent_gradients.h);
 /// pass the same one for all the tets of an assembly.
 void element_stiffness_at_points(const EnrichedMesh& em, int t, const PointRule& rule, const Lame& material,

@@ -141,8 +141,10 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
     for (int b = a + 1; b < 4; ++b) h = std::max(h, (p[a] - p[b]).norm());
   const double tolerance = 1e-12 * h;
   const std::vector<const FrontSegment*> fronts = fronts_near(front, p, tolerance);
-  const int n = std::max(order, 2);
-  const int depth = std::max(0, order - 3);
+  // The face points of the consistent shift of the rule of this order (sampled_gradients).
+  const int face_order = consistent_face_points(order);
+  const int n = std::max(face_order, 2);
+  const int depth = std::max(0, face_order - 3);
   std::vector<double> nodes, weights;
   gauss_legendre_01(n, nodes, weights);
   std::vector<Eigen::Vector3d> x;

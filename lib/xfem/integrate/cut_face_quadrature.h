@@ -49,11 +49,12 @@ struct CutFacePoint {
 
 /// The integration points of cut `k`'s faces in tet t: the wound's own geometry, every triangle of
 /// the cut surface clipped to the tet (clip_triangle; a convex polygon), integrated by
-/// polygon_gauss_rule with max(order, 2) Gauss points per direction, fanned from polygon_fan_apex
+/// polygon_gauss_rule with max(m, 2) Gauss points per direction, m = consistent_face_points(order)
+/// (conforming_quadrature.h: `order` is the conforming rule's), fanned from polygon_fan_apex
 /// (a front point piercing the polygon or a corner on the front: the collapse of the rule sits
-/// where sqrt(r) is least smooth) and subdivided towards the front max(0, order - 3) times. These
+/// where sqrt(r) is least smooth) and subdivided towards the front max(0, m - 3) times. These
 /// are the very points with which branch_gradient_integrals (consistent_gradients.h) integrates the
-/// cut's term for the same order, so that a load on the faces and the stiffness agree to round-off
+/// cut's term in the shift of the rule of that order (sampled_gradients), so that a load on the faces and the stiffness agree to round-off
 /// (the superposition identity of docs/VERIFICATION.md). Linear integrands (the sign part of a
 /// load) are exact; the branch part (sqrt r N_l) converges with the order. Nothing for a tet the cut
 /// does not split (its cut_class for cut k is 0) or one without enriched DOFs. A polygon lying in a

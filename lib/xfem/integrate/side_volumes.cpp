@@ -39,27 +39,23 @@ namespace {
 
 using Polygon = std::vector<Eigen::Vector3d>;
 
-// The parts of the convex polygon on either side of the plane (point, normal), corners within
-// `tolerance` of it on both; a polygon the plane does not cross (lying in it included) stays whole.
-void cut_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
-                 std::vector<Polygon>& out) {
+// The parts of the convex polygon on and above / on and below the plane (point, normal): corners
+// within `tolerance` of it count as on it and go to both, crossing edges add their crossing point to
+// both. Either part may have fewer than 3 corners (nothing of the polygon on that side). Returns
+// whether the plane crosses the polygon (corners beyond `tolerance` on both sides).
+bool split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
+                   Polygon& above, Polygon& below) {
+  above.clear();
+  below.clear();
   bool positive = false, negative = false;
-  for (const auto& x : poly) {
-    const double d = normal.dot(x - point);
-    positive = positive || d > tolerance;
-    negative = negative || d < -tolerance;
-  }
-  if (!(positive && negative)) {
-    out.push_back(poly);
-    return;
-  }
-  Polygon above, below;
   const std::size_t n = poly.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector3d &u = poly[k], &v = poly[(k + 1) % n];
     double du = normal.dot(u - point), dv = normal.dot(v - point);
     if (std::abs(du) <= tolerance) du = 0;
     if (std::abs(dv) <= tolerance) dv = 0;
+    positive = positive || du > 0;
+    negative = negative || du < 0;
     if (du >= 0) above.push_back(u);
     if (du <= 0) below.push_back(u);
     if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) {
@@ -68,6 +64,18 @@ void cut_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen:
       below.push_back(x);
     }
   }
+  return positive && negative;
+}
+
+// The parts of the convex polygon on either side of the plane (point, normal), corners within
+// `tolerance` of it on both; a polygon the plane does not cross (lying in it included) stays whole.
+void cut_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
+                 std::vector<Polygon>& out) {
+  Polygon above, below;
+  if (!split_polygon(poly, point, normal, tolerance, above, below)) {
+    out.push_back(poly);
+    return;
+  }
   if (above.size() >= 3) out.push_back(above);
   if (below.size() >= 3) out.push_back(below);
 }
@@ -75,16 +83,8 @@ void cut_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen:
 // The part of the convex polygon on the side of the plane (point, normal) the normal points to
 // (corners within `tolerance` of the plane kept); empty if fewer than 3 corners remain.
 Polygon keep_above(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance) {
-  Polygon above;
-  const std::size_t n = poly.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector3d &u = poly[k], &v = poly[(k + 1) % n];
-    double du = normal.dot(u - point), dv = normal.dot(v - point);
-    if (std::abs(du) <= tolerance) du = 0;
-    if (std::abs(dv) <= tolerance) dv = 0;
-    if (du >= 0) above.push_back(u);
-    if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) above.push_back(u + du / (du - dv) * (v - u));
-  }
+  Polygon above, below;
+  split_polygon(poly, point, normal, tolerance, above, below);
   if (above.size() < 3) above.clear();
   return above;
 }

@@ -85,14 +85,14 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
-                              int conforming_order, bool closed_form, bool graded) {
+                              int conforming_order, bool closed_form, bool graded, bool uniform) {
   return stiffness_matrix(em, TetMaterials(MaterialLaw{MaterialModel::Linear, material}), rule, stats, progress,
-                          conforming_order, closed_form, graded);
+                          conforming_order, closed_form, graded, uniform);
 }
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
-                              int conforming_order, bool closed_form, bool graded) {
+                              int conforming_order, bool closed_form, bool graded, bool uniform) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -137,9 +137,12 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
           // Points for the branch functions only: the other blocks need the side volumes alone.
           if (!em.branch(t)) points.clear();
           else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
+          else if (uniform) conforming_rule(em, splits, t, TetRuleLayout::uniform(conforming_order), points);
           else conforming_rule(em, splits, t, conforming_order, points);
-          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i],
-                                graded ? TetRuleLayout::graded_consistent_order : conforming_order, &faces);
+          // The consistent shift of the rule's order; uniform(n) had n face points (consistent_face_points).
+          const int consistent = graded ? TetRuleLayout::graded_consistent_order
+                                 : uniform ? conforming_order - 1 : conforming_order;
+          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces);
         } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
           element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
@@ -222,7 +225,7 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, con
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, materials, oversampling_quadrature(points, refine), &s, progress,
-                           conforming ? problem.order : 0, problem.closed_form, problem.graded);
+                           conforming ? problem.order : 0, problem.closed_form, problem.graded, problem.uniform);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
   add_cut_loads(em, problem, sys.f);  // the cuts' faces (cut_loads.h): enriched DOFs only

@@ -130,6 +130,10 @@ struct Problem {
   /// Conforming rule, closed form: the branch functions' points laid out by TetRuleLayout::graded()
   /// (integration.rule "graded"; `order` unused) instead of the uniform rule of `order`.
   bool graded = false;
+  /// Conforming rule, closed form: the branch functions' points laid out by TetRuleLayout::uniform(order)
+  /// with the consistent shift on `order` face points: the rule of order n before issue 35 (xfem-assemble
+  /// --rule uniform, for comparisons; not a problem.json rule).
+  bool uniform = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
