@@ -40,7 +40,7 @@ bool on_front(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const std::vec
 
 }  // namespace
 
-std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order) {
+std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, const std::vector<char>& wanted) {
   std::vector<CrackFacePoint> out;
   if (!em.cut || em.cut_class.empty()) return out;
   const int n = std::max(order, 1);
@@ -49,6 +49,7 @@ std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order) {
   const TriangleMesh& surface = em.cut->mesh();
   for (int t = 0; t < em.tets(); ++t) {
     if (em.cut_class[static_cast<std::size_t>(t)] == 0 || em.plain(t)) continue;
+    if (!wanted.empty() && !wanted[static_cast<std::size_t>(t)]) continue;
     TetCorners p;
     for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
     double h = 0;

@@ -27,6 +27,8 @@ struct CrackFacePoint {
 /// and 1 (t = tau^2 / 2, 1 - tau^2 / 2): a rho^-1/2 singularity at A, along AB (t = 0) or along AC
 /// (t = 1) becomes a smooth integrand, and `order` Gauss points per direction (per half in t)
 /// converge fast. Linear integrands (areas, the weight q) are exact from order 3 on.
-std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order);
+/// `wanted` (one flag per tet, or empty: all): the tets to integrate (xfem-front: those within the
+/// domain radius of the front, where the weight q can be positive).
+std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, const std::vector<char>& wanted = {});
 
 }  // namespace xfem

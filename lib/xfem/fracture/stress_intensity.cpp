@@ -261,11 +261,19 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       for (int j = i + 1; j < 4; ++j)
         h_max = std::max(h_max, (mesh.points.row(mesh.tets(t, i)) - mesh.points.row(mesh.tets(t, j))).norm());
 
-  // Loaded faces: the crack-face term's points, once (stress_intensity.h).
+  // Loaded faces: the crack-face term's points, once (stress_intensity.h), in the tets with a node
+  // within R of the front (elsewhere q = 0 for every front point).
   const bool loaded = options.face_pressure != 0.0 || options.face_traction.norm() > 0.0;
   if (loaded && options.face_order < 1) throw Error("face_order must be at least 1");
-  const std::vector<CrackFacePoint> face_points = loaded ? crack_face_rule(em, options.face_order)
-                                                         : std::vector<CrackFacePoint>();
+  std::vector<CrackFacePoint> face_points;
+  if (loaded) {
+    std::vector<char> near(static_cast<std::size_t>(em.tets()), 0);
+    for (int t = 0; t < em.tets(); ++t)
+      for (int c = 0; c < 4 && !near[static_cast<std::size_t>(t)]; ++c)
+        for (std::size_t p = 0; p < chains.size(); ++p)
+          if (node_rho[p][mesh.tets(t, c)] < R) near[static_cast<std::size_t>(t)] = 1;
+    face_points = crack_face_rule(em, options.face_order, near);
+  }
 
   const double denom12 = E / (2.0 * (1.0 - nu * nu));
   const bool has_body = body.norm() > 0;
