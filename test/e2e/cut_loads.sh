@@ -8,7 +8,8 @@
 # crack opens, so contact never acts) at its measured value, below 16 (1 - nu^2) p a^3 / (3 E);
 # one-line errors for a cut index out of range, a pressure that is not a number, contact with
 # the PETSc backend, cut loads given to xfem-newton or xfem-sweep. K from xfem-front with the
-# crack-face term: K(pressure) = K(remote) on the same mesh (to 2e-3 K).
+# crack-face term: K(pressure) = K(remote) on the same mesh (to 2e-3 K), and for the inclined penny
+# K(pressure and traction on the faces) = K(remote normal stress and shear).
 set -u
 fail() { echo "FAIL: $*" >&2; exit 1; }
 rm -rf "$XFEM_SCRATCH" && mkdir -p "$XFEM_SCRATCH" || exit 1
@@ -81,6 +82,33 @@ print("K(pressure) - K(remote): max %.2e K; K_I error: pressure %+.2f .. %+.2f %
                                          100 * max(err_remote), 100 * without))
 assert identity < 2e-3  # measured 7.8e-4 (the face rule's and the volume rule's error on the uniform field)
 assert without > 0.5  # measured 109 %
+PY
+# A traction vector too: the inclined penny (normal stress 0.5 Pa, shear 0.5 Pa along x) loaded on
+# its faces by pressure 0.5 and traction (0.5, 0, 0) against the same crack under the remote
+# stress (data/penny_inclined.json): K_I, K_II and K_III the same on the same mesh.
+python3 - "$D/penny_inclined.json" <<'PY' || fail "inclined problem"
+import json, sys
+j = json.load(open(sys.argv[1]))
+for d in j['dirichlet']:
+    d['exact']['penny']['loading'] = 'faces'
+j['cut_loads'] = [{'cut': 0, 'pressure': 0.5, 'traction': [0.5, 0.0, 0.0]}]
+json.dump(j, open('inclined_faces.json', 'w'))
+PY
+for c in inclined inclined_faces; do
+  p="$D/penny_inclined.json"; [ $c = inclined ] || p=inclined_faces.json
+  "$B/xfem-assemble" -q enriched.vtu --cut cut.vtp --problem "$p" -o $c/system || fail "assemble $c"
+  "$B/xfem-solve" -q $c/system -o $c/u.mtx || fail "solve $c"
+  "$B/xfem-front" -q enriched.vtu --cut cut.vtp --solution $c/u.mtx --problem "$p" --radius 0.1 --csv $c/front.csv \
+    || fail "front $c"
+done
+python3 - <<'PY' || fail "K with a traction on the faces"
+import csv
+remote, faces = (list(csv.DictReader(open(c + '/front.csv'))) for c in ('inclined', 'inclined_faces'))
+amplitude = {'K_I': 0.3090, 'K_II': 0.3635, 'K_III': 0.2545}
+worst = {k: max(abs(float(f[k]) - float(r[k])) for f, r in zip(faces, remote)) / a for k, a in amplitude.items()}
+print("inclined penny, K(faces loaded) - K(remote) over each factor's amplitude: " +
+      ", ".join("%s %.2e" % kv for kv in worst.items()))
+assert len(remote) == len(faces) == 19 and max(worst.values()) < 2e-3  # measured K_I 9.8e-4, K_II 3.9e-4, K_III 4.4e-4
 PY
 # Bad inputs: one line each, nothing written.
 bad() {  # $1: problem.json text, $2: the expected message (grep -E)
