@@ -12,6 +12,7 @@
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
 #include "xfem/core/regions.h"
+#include "xfem/fracture/crack_face_rule.h"
 #include "xfem/fracture/exact_fields.h"
 #include "xfem/fracture/front_cost.h"
 #include "enriched_test_meshes.h"
@@ -405,4 +406,27 @@ TEST_CASE("stress_intensity: the pressurised penny fed in exactly: K_I = 2 p sqr
     CHECK(identity < 1e-3);
     CHECK(without > 0.1);
   }
+}
+
+TEST_CASE("crack_face_rule: the cut's area exactly, and rho^-1/2 along the front to 1e-6", "[face_loads]") {
+  // The straight cut z = 0.47, x <= 0.53 through the unit box: area 0.53 inside it; the integral of
+  // rho^-1/2 (rho = 0.53 - x, the distance to the front) is 2 sqrt(0.53) (per metre of front, 1 m).
+  const auto cut = straight_cut();
+  const xfem::EnrichedMesh em = enriched_box(5, cut, 0.0);
+  for (int order : {3, 6}) {
+    INFO("order " << order);
+    const auto points = xfem::crack_face_rule(em, order);
+    double area = 0.0, singular = 0.0;
+    for (const auto& p : points) {
+      CHECK(std::abs(p.x.z() - 0.47) < 1e-12);
+      CHECK(p.normal.isApprox(Eigen::Vector3d::UnitZ()));
+      area += p.weight;
+      singular += p.weight / std::sqrt(0.53 - p.x.x());
+    }
+    CHECK_THAT(area, Catch::WithinRel(0.53, 1e-12));
+    CHECK_THAT(singular, Catch::WithinRel(2.0 * std::sqrt(0.53), order == 6 ? 1e-6 : 1e-3));
+  }
+  // Only the wanted tets.
+  std::vector<char> none(static_cast<std::size_t>(em.tets()), 0);
+  CHECK(xfem::crack_face_rule(em, 4, none).empty());
 }
