@@ -19,7 +19,7 @@ import sys
 def load_exact(path):
     """The exact factors as (function of a front.csv row -> [K_I, K_II, K_III], references [3]): a
     Williams field's constant K's (references: the largest |K|), or the penny-shaped crack's
-    K_I = 2 sigma sqrt(a / pi) and, with a remote shear tau (an inclined disc),
+    K_I = 2 sigma sqrt(a / pi) (0 with "loading": "closed") and, with a remote shear tau (an inclined disc),
     K_II = 4 / (2 - nu) sqrt(a / pi) tau.a, K_III = 4 (1 - nu) / (2 - nu) sqrt(a / pi) tau.c in the
     frame a = radial, b = the disc's normal, c = a x b (exact_fields.h; references: each factor's
     amplitude along the front)."""
@@ -28,7 +28,9 @@ def load_exact(path):
     if "penny" in j:
         p = j["penny"]
         a, sigma = float(p["radius"]), float(p["sigma"])
-        k1 = 2.0 * sigma * math.sqrt(a / math.pi)
+        # "loading": "closed": the faces pressed shut carry the normal stress, no opening: K_I = 0.
+        closed = p.get("loading") == "closed"
+        k1 = 0.0 if closed else 2.0 * sigma * math.sqrt(a / math.pi)
         tau = [float(v) for v in p.get("shear", [0.0, 0.0, 0.0])]
         if not any(tau):
             return (lambda row: [k1, 0.0, 0.0]), [abs(k1)] * 3
@@ -50,7 +52,8 @@ def load_exact(path):
             return [k1, 4.0 * g * sum(tau[i] * ea[i] for i in range(3)),
                     4.0 * (1.0 - nu) * g * sum(tau[i] * ec[i] for i in range(3))]
 
-        return exact, [abs(k1), 4.0 * g * t, 4.0 * (1.0 - nu) * g * t]
+        # K_I's reference: its amplitude, or with shut faces (K_I = 0) K_II's.
+        return exact, [4.0 * g * t if closed else abs(k1), 4.0 * g * t, 4.0 * (1.0 - nu) * g * t]
     w = j["williams"]
     k = [float(w.get("K1", 0.0)), float(w.get("K2", 0.0)), float(w.get("K3", 0.0))]
     kref = max(abs(v) for v in k)

@@ -8,9 +8,9 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/cli.h"
-#include "xfem/enrich/enriched_mesh.h"
 #include "xfem/core/error.h"
 #include "xfem/io/matrix_market.h"
+#include "xfem/system/cut_loads.h"
 #include "xfem/system/problem.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/fracture/stress_intensity.h"
@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
       "Stress intensity factors K_I, K_II, K_III and the energy release rate G at points along the cut\n"
       "front, by the interaction integral in its 3D domain form (auxiliary Williams fields in the local\n"
       "front frame, round the front's osculating circle with the curvature terms of a curved front;\n"
-      "weight q = radial ramp x tangential hat, interpolated from the nodes). Plane strain\n"
+      "weight q = radial ramp x tangential hat, interpolated from the nodes; with cut_loads on the\n"
+      "evaluated cut, the crack-face term of the loaded faces). Plane strain\n"
       "at interior front points; points at an end of the front (on the body's surface) are marked.\n"
       "Writes the front as a polyline with point arrays K_I, K_II, K_III, G (SI units) and/or a CSV\n"
       "(docs/FORMATS.md \"front.vtp\", \"front.csv\").",
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E, nu, or each region's (materials): a "
-                                               "front point's domain must lie in one; body force)")->required();
+                                               "front point's domain must lie in one; body force; cut_loads)")->required();
   app.add_option("-o,--output", output, "front polyline with K_I, K_II, K_III, G (.vtp)");
   app.add_option("--csv", csv, "front as CSV: chain, arc_length, x, y, z, K_I, K_II, K_III, G, end");
   app.add_option("--png", png, "plot K along the front (gnuplot)");
@@ -105,7 +106,14 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     xfem::EnrichedMesh em = xfem::read_enriched_mesh_cuts(input, cut_paths, &warnings);
     xfem::check_solution_provenance({solution, input, cut_paths, problem_path}, em);  // before select_front_of
+    xfem::check_cut_indices(problem, xfem::cut_count(em));
     xfem::select_front_of(em, front_of, input);
+    // Loads on the evaluated cut's faces: the interaction integral's crack-face term.
+    for (const xfem::CutLoad& load : problem.cut_loads)
+      if (load.cut == front_of) options.face_pressure += load.pressure, options.face_traction += load.traction;
+    if (problem.contact.applies_to(front_of))
+      xfem::cli::warn(problem_path + ": contact is on for cut " + std::to_string(front_of) + ": K leaves out the "
+                      "contact pressure on its faces (right where they are open, not where they touch)");
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");
     const Eigen::VectorXd u = xfem::read_vector(solution);

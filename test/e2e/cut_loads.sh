@@ -7,7 +7,9 @@
 # and H1 errors as the remote-tension penny; the crack's volume (xfem-solve's contact report; the
 # crack opens, so contact never acts) at its measured value, below 16 (1 - nu^2) p a^3 / (3 E);
 # one-line errors for a cut index out of range, a pressure that is not a number, contact with
-# the PETSc backend, cut loads given to xfem-newton or xfem-sweep.
+# the PETSc backend, cut loads given to xfem-newton or xfem-sweep. K from xfem-front with the
+# crack-face term: K(pressure) = K(remote) on the same mesh (to 2e-3 K), and for the inclined penny
+# K(pressure and traction on the faces) = K(remote normal stress and shear).
 set -u
 fail() { echo "FAIL: $*" >&2; exit 1; }
 rm -rf "$XFEM_SCRATCH" && mkdir -p "$XFEM_SCRATCH" || exit 1
@@ -52,6 +54,63 @@ print("crack volume %.5g m^3, Sneddon %.5g (%.1f %%); contact points %d, active 
 assert abs(c['opened_volume'] - 0.11558) < 0.005 * 0.11558 and c['opened_volume'] < exact
 assert c['active_points'] == 0 and c['solves'] == 1
 PY
+# K with loaded faces (xfem-front's crack-face term): the superposition identity on the same mesh,
+# K(pressure p on the faces) = K(remote tension p) (the uniform field has K = 0: its volume term and
+# its faces' traction term cancel, to the face rule's error), hence the pressurised penny's K_I has
+# the remote penny's error and convergence (docs/VERIFICATION.md); without the face term K_I is far off.
+for c in penny penny_pressure; do
+  "$B/xfem-front" enriched.vtu --cut cut.vtp --solution $c/u.mtx --problem "$D/$c.json" --radius 0.1 \
+    --csv $c/front.csv 2> $c/front.err || fail "front $c: $(cat $c/front.err)"
+done
+grep -q "contact is on for cut 0: K leaves out the contact pressure" penny_pressure/front.err \
+  || fail "no warning about the contact pressure: $(cat penny_pressure/front.err)"
+printf '{"material": {"E": 1, "nu": 0.3}}\n' > unloaded.json
+grep -v '^% xfem-fingerprint' penny_pressure/u.mtx > unsigned.mtx
+"$B/xfem-front" -q enriched.vtu --cut cut.vtp --solution unsigned.mtx --problem unloaded.json --radius 0.1 \
+  --csv unloaded.csv || fail "front without the face term"
+python3 - <<'PY' || fail "K with loaded faces"
+import csv, math
+K = 2 * 1.0 * math.sqrt(0.3 / math.pi)
+rows = {c: [r for r in csv.DictReader(open(c)) ] for c in ('penny/front.csv', 'penny_pressure/front.csv', 'unloaded.csv')}
+remote, pressure, unloaded = rows['penny/front.csv'], rows['penny_pressure/front.csv'], rows['unloaded.csv']
+assert len(remote) == len(pressure) == 19
+identity = max(abs(float(p[k]) - float(r[k])) / K for p, r in zip(pressure, remote) for k in ('K_I', 'K_II', 'K_III'))
+err = [float(p['K_I']) / K - 1 for p in pressure]
+err_remote = [float(r['K_I']) / K - 1 for r in remote]
+without = max(abs(float(u['K_I']) / K - 1) for u in unloaded)
+print("K(pressure) - K(remote): max %.2e K; K_I error: pressure %+.2f .. %+.2f %%, remote %+.2f .. %+.2f %%; "
+      "without the face term %.0f %%" % (identity, 100 * min(err), 100 * max(err), 100 * min(err_remote),
+                                         100 * max(err_remote), 100 * without))
+assert identity < 2e-3  # measured 7.8e-4 (the face rule's and the volume rule's error on the uniform field)
+assert without > 0.5  # measured 109 %
+PY
+# A traction vector too: the inclined penny (normal stress 0.5 Pa, shear 0.5 Pa along x) loaded on
+# its faces by pressure 0.5 and traction (0.5, 0, 0) against the same crack under the remote
+# stress (data/penny_inclined.json): K_I, K_II and K_III the same on the same mesh.
+python3 - "$D/penny_inclined.json" <<'PY' || fail "inclined problem"
+import json, sys
+j = json.load(open(sys.argv[1]))
+for d in j['dirichlet']:
+    d['exact']['penny']['loading'] = 'faces'
+j['cut_loads'] = [{'cut': 0, 'pressure': 0.5, 'traction': [0.5, 0.0, 0.0]}]
+json.dump(j, open('inclined_faces.json', 'w'))
+PY
+for c in inclined inclined_faces; do
+  p="$D/penny_inclined.json"; [ $c = inclined ] || p=inclined_faces.json
+  "$B/xfem-assemble" -q enriched.vtu --cut cut.vtp --problem "$p" -o $c/system || fail "assemble $c"
+  "$B/xfem-solve" -q $c/system -o $c/u.mtx || fail "solve $c"
+  "$B/xfem-front" -q enriched.vtu --cut cut.vtp --solution $c/u.mtx --problem "$p" --radius 0.1 --csv $c/front.csv \
+    || fail "front $c"
+done
+python3 - <<'PY' || fail "K with a traction on the faces"
+import csv
+remote, faces = (list(csv.DictReader(open(c + '/front.csv'))) for c in ('inclined', 'inclined_faces'))
+amplitude = {'K_I': 0.3090, 'K_II': 0.3635, 'K_III': 0.2545}
+worst = {k: max(abs(float(f[k]) - float(r[k])) for f, r in zip(faces, remote)) / a for k, a in amplitude.items()}
+print("inclined penny, K(faces loaded) - K(remote) over each factor's amplitude: " +
+      ", ".join("%s %.2e" % kv for kv in worst.items()))
+assert len(remote) == len(faces) == 19 and max(worst.values()) < 2e-3  # measured K_I 9.8e-4, K_II 3.9e-4, K_III 4.4e-4
+PY
 # Bad inputs: one line each, nothing written.
 bad() {  # $1: problem.json text, $2: the expected message (grep -E)
   printf '%s\n' "$1" > bad.json
@@ -63,6 +122,12 @@ bad '{"material": {"E": 1, "nu": 0.3}, "cut_loads": [{"cut": 1, "pressure": 1}]}
   "bad.json: cut_loads\[0\]\.cut is 1, but the mesh has 1 cut \(indices 0\.\.0\)"
 bad '{"material": {"E": 1, "nu": 0.3}, "cut_loads": [{"pressure": "high"}]}' "bad.json: cut_loads\[0\]\.pressure must be a number"
 bad '{"material": {"E": 1, "nu": 0.3}, "contact": {"cuts": [3]}}' "bad.json: contact\.cuts\[0\] is 3, but the mesh has 1 cut"
+printf '{"material": {"E": 1, "nu": 0.3}, "cut_loads": [{"cut": 1, "pressure": 1}]}\n' > bad.json
+"$B/xfem-front" -q enriched.vtu --cut cut.vtp --solution unsigned.mtx --problem bad.json --csv bad.csv 2> err \
+  && fail "xfem-front accepted a load on a cut the mesh does not have"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-front: error: bad.json: cut_loads\[0\]\.cut is 1, but the mesh has 1 cut" err \
+  || fail "message: $(cat err)"
+[ ! -e bad.csv ] || fail "output left behind"
 "$B/xfem-solve" penny_pressure/system -o bad.mtx --backend petsc 2> err && fail "contact with PETSc accepted"
 grep -q "contact between the cut's faces is solved by the cholmod backend only" err || fail "message: $(cat err)"
 [ ! -e bad.mtx ] || fail "output left behind"

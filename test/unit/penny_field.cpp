@@ -267,3 +267,26 @@ TEST_CASE("penny: under remote shear an elastic field that tends to the remote s
   }
   CHECK_THROWS_WITH(f.gradient(point(f, 2 * f.radius, 0, 0)), Catch::Contains("not available"));
 }
+
+TEST_CASE("penny: \"loading\": \"closed\" is the uniform compression with no opening; a tension refused",
+          "[penny]") {
+  const auto parse = [](const char* text) {
+    return xfem::parse_exact_field(xfem::Json::parse(text), "exact.json", "");
+  };
+  const xfem::ExactField f = parse(
+      R"({"penny": {"normal": [0, 0, 1], "radius": 0.3, "sigma": -2, "loading": "closed", "E": 1, "nu": 0.3}})");
+  REQUIRE(f.penny.closed);
+  // Uniform: sigma n n^T, the strain -2 ((1 + nu) e_z e_z - nu I) / E at every point, on both faces.
+  const Eigen::Vector3d x(0.1, -0.05, 0.0);
+  Eigen::Matrix3d eps = Eigen::Matrix3d::Identity() * 0.6;
+  eps(2, 2) = -2.0;
+  CHECK(f.gradient(x, 1).isApprox(eps, 1e-14));
+  CHECK((f.displacement(x, 1) - f.displacement(x, -1)).norm() == 0.0);  // no opening
+  CHECK(f.displacement(x, 1).isApprox(eps * x, 1e-14));
+  CHECK_THROWS_WITH(
+      parse(R"({"penny": {"normal": [0, 0, 1], "radius": 1, "sigma": 1, "loading": "closed", "E": 1, "nu": 0.3}})"),
+      Catch::Contains("sigma must be <= 0 with \"loading\": \"closed\""));
+  CHECK_THROWS_WITH(
+      parse(R"({"penny": {"normal": [0, 0, 1], "radius": 1, "sigma": 1, "loading": "shut", "E": 1, "nu": 0.3}})"),
+      Catch::Contains("\"remote\", \"faces\" or \"closed\""));
+}

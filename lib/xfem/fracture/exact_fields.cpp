@@ -277,9 +277,18 @@ void PennyField::evaluate(const Eigen::Vector3d& x, int side, Eigen::Vector3d* u
   }
 }
 
+// The uniform strain of the remote normal tension sigma n n^T.
+static Eigen::Matrix3d penny_normal_strain(const PennyField& p) {
+  const Eigen::Vector3d n = p.normal.normalized();
+  return p.sigma / p.E * ((1 + p.nu) * n * n.transpose() - p.nu * Eigen::Matrix3d::Identity());
+}
+
 Eigen::Vector3d PennyField::displacement(const Eigen::Vector3d& x, int side) const {
   Eigen::Vector3d u;
-  evaluate(x, side, &u, nullptr);
+  if (closed)
+    u = penny_normal_strain(*this) * (x - centre);  // faces shut: the uniform field alone
+  else
+    evaluate(x, side, &u, nullptr);
   if (shear.squaredNorm() > 0) {
     const Eigen::Vector3d n = normal.normalized();
     if (std::abs(shear.dot(n)) > 1e-12 * shear.norm()) throw Error("penny field: shear must lie in the disc's plane");
@@ -295,6 +304,7 @@ Eigen::Matrix3d PennyField::gradient(const Eigen::Vector3d& x, int side) const {
   if (shear.squaredNorm() > 0)
     throw Error("penny field with shear: its gradient is not available (the shear part is a displacement by "
                 "quadrature, for Dirichlet data): no L2 / H1 errors, nodal errors only away from the disc");
+  if (closed) return penny_normal_strain(*this);
   Eigen::Matrix3d G;
   evaluate(x, side, nullptr, &G);
   return G;

@@ -82,6 +82,11 @@ struct PennyField {
   /// face above, the opposite below; zero at infinity): the same field without the remote uniform
   /// one, which has no jump, so the opening and K are the same (problem.json "cut_loads").
   bool remote = true;
+  /// true: the faces pressed shut by a remote compression sigma <= 0 (problem.json "loading":
+  /// "closed"; frictionless contact, issue 33): they carry the normal stress, so the normal part
+  /// is the uniform field sigma n n^T alone (no Sneddon perturbation, no opening); the shear part
+  /// is unchanged (frictionless faces slide freely by the elliptical jump above).
+  bool closed = false;
 
   /// Displacement at x (metres; rigid motion: none, u(centre) = 0). `side` (+1 / -1) picks the
   /// face for a point in the disc's plane inside the disc (|z| <= 1e-12 a); 0: the +1 face.

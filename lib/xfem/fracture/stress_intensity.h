@@ -59,6 +59,14 @@ namespace xfem {
 /// components in the frame at x (u_b,a = b . grad u a). The singular parts of the last two cancel
 /// analytically (2D compatibility and equilibrium of the Williams fields): what is left is
 /// O(kappa r^-1), integrable. On a straight front kappa = 0 and this is the form above.
+///
+/// Loaded faces (FrontSifOptions::face_pressure, face_traction): the divergence theorem over the
+/// domain, whose boundary includes the cut's two faces, leaves on them int q P_kj a_k m_j dA (m the
+/// material's outward normal, a.m = 0 on a flat face; the auxiliary field is traction-free there),
+/// i.e. - int q t . (H a) dA with t = sigma m the applied traction: summed over the two faces,
+///   I Q += - int over the cut of q (p n + t) . [[H a]] dA,   [[H a]] = H a (above) - H a (below),
+/// the sign convention of Moes & Gravouil's and Walters, Paulino & Dodds's crack-face term. Only
+/// F_0 = sqrt(r) sin(theta / 2) jumps, so [[H a]] ~ rho^-1/2 along the front (crack_face_rule.h).
 enum class FrontAuxiliary {
   Curvilinear,             ///< toroidal Williams fields with the curvature terms (default)
   CurvilinearUncorrected,  ///< the same fields without the incompatibility and non-equilibrium terms (for studies)
@@ -81,6 +89,14 @@ struct FrontSifOptions {
   /// With several, each front point's domain (the tets where q > 0 at a node) must hold tets of
   /// one material, whose E and nu are used there; else xfem::Error naming the point and two regions.
   const TetMaterials* materials = nullptr;
+  /// A load on the evaluated cut's faces (problem.json cut_loads on that cut, summed): the face
+  /// above (H = +1) pushed by face_pressure n + face_traction, the face below by the opposite. With
+  /// either non-zero the crack-face term - 1/Q int over the cut of q (p n + t) . [[H a]] dA is added
+  /// (docs/METHOD.md "K with loaded faces"), integrated by crack_face_rule with `face_order` points
+  /// per direction; both zero: no term, the results of an unloaded cut unchanged bit for bit.
+  double face_pressure = 0.0;                                 ///< Pa, > 0 pushes the faces apart
+  Eigen::Vector3d face_traction = Eigen::Vector3d::Zero();    ///< Pa, on the face above
+  int face_order = 6;                                         ///< Gauss points per direction of the face rule
 };
 
 /// One evaluation point on the front.

@@ -175,9 +175,12 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     }
     if (w.has("loading")) {  // "remote" tension (the default) or "faces": the same load on the disc's faces
       const std::string loading = w.at("loading").string();
-      if (loading != "remote" && loading != "faces")
-        w.at("loading").fail("must be \"remote\" or \"faces\", got \"" + loading + "\"");
-      P.remote = loading == "remote";
+      if (loading != "remote" && loading != "faces" && loading != "closed")
+        w.at("loading").fail("must be \"remote\", \"faces\" or \"closed\", got \"" + loading + "\"");
+      P.remote = loading != "faces";
+      P.closed = loading == "closed";  // faces pressed shut by a remote compression (contact)
+      if (P.closed && !(P.sigma <= 0))
+        w.at("sigma").fail("must be <= 0 with \"loading\": \"closed\" (faces pressed shut), got " + short_number(P.sigma));
     }
     if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
     P.E = w.has("E") ? w.at("E").number() : material->first;
