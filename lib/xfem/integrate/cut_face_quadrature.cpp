@@ -18,9 +18,10 @@ const std::vector<int>& classes_of(const EnrichedMesh& em, int k) {
   return em.cuts.empty() ? em.cut_class : em.cuts[static_cast<std::size_t>(k)].cut_class;
 }
 
-// Whether every vertex of `polygon` lies in the plane of one face of the tet p (within `tol`): a
-// cut running along a mesh face, which the tet on the face's other side clips the same way.
-bool lies_in_a_face(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
+// The corner of tet p opposite the face in whose plane every vertex of `polygon` lies (within
+// `tol`), or -1: a cut running along a mesh face, which the tet on the face's other side may clip
+// the same way.
+int corner_off_face_holding(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
   for (int skip = 0; skip < 4; ++skip) {
     const Eigen::Vector3d& a = p[(skip + 1) % 4];
     const Eigen::Vector3d n = (p[(skip + 2) % 4] - a).cross(p[(skip + 3) % 4] - a);
@@ -28,9 +29,9 @@ bool lies_in_a_face(const TetCorners& p, const std::vector<Eigen::Vector3d>& pol
     const Eigen::Vector3d u = n.normalized();
     bool all = true;
     for (const Eigen::Vector3d& v : polygon) all = all && std::abs(u.dot(v - a)) <= tol;
-    if (all) return true;
+    if (all) return skip;
   }
-  return false;
+  return -1;
 }
 
 // The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
@@ -155,8 +156,13 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
                                        surface.points.row(surface.triangles(tri, 1)).transpose(),
                                        surface.points.row(surface.triangles(tri, 2)).transpose());
     if (!(polygon_area(poly) > 1e-10 * h * h)) continue;
-    const double share = lies_in_a_face(p, poly, tolerance) ? 0.5 : 1.0;
     const Eigen::Vector3d normal = cut->unit_normal(tri);
+    // A polygon in a face of the tet belongs to one of the two tets sharing that face: the one
+    // below the cut. Classification puts the nodes on the cut above (side +1), so the tet above
+    // may be uncut and carry no enriched DOF at all (a cut along a node layer), while the tet
+    // below always sees both sides; counting it once there gives the face its whole area.
+    const int off = corner_off_face_holding(p, poly, tolerance);
+    if (off >= 0 && normal.dot(p[off] - poly[0]) > 0) continue;
     polygon_gauss_rule(poly, polygon_fan_apex(poly, normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (!(w[i] > 0)) continue;
@@ -166,7 +172,7 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
       q.triangle = tri;
       q.x = x[i];
       q.normal = normal;
-      q.weight = share * w[i];
+      q.weight = w[i];
       out.push_back(q);
     }
   }

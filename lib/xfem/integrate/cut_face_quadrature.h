@@ -58,7 +58,8 @@ struct CutFacePoint {
 /// (the superposition identity of docs/VERIFICATION.md). Linear integrands (the sign part of a
 /// load) are exact; the branch part (sqrt r N_l) converges with the order. Nothing for a tet the cut
 /// does not split (its cut_class for cut k is 0) or one without enriched DOFs. A polygon lying in a
-/// face of the tet (a cut along mesh faces) counts with weight 1/2 in each of the two tets.
+/// face of the tet (a cut along mesh faces) counts once, in the tet below the cut (the nodes on the
+/// cut are above: the tet above may carry no enriched DOF).
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out);
 
 /// Every point of cut k's faces, tet after tet in increasing order.
