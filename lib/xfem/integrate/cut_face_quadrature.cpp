@@ -14,9 +14,6 @@ namespace {
 const CutSurface* surface_of(const EnrichedMesh& em, int k) {
   return em.cuts.empty() ? em.cut.get() : em.cuts[static_cast<std::size_t>(k)].cut.get();
 }
-const std::vector<int>& classes_of(const EnrichedMesh& em, int k) {
-  return em.cuts.empty() ? em.cut_class : em.cuts[static_cast<std::size_t>(k)].cut_class;
-}
 
 // The corner of tet p opposite the face in whose plane every vertex of `polygon` lies (within
 // `tol`), or -1: a cut running along a mesh face, which the tet on the face's other side may clip
@@ -132,7 +129,9 @@ std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std:
 
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out) {
   const CutSurface* cut = surface_of(em, k);
-  if (!cut || classes_of(em, k)[static_cast<std::size_t>(t)] == 0 || em.plain(t)) return;
+  // Not only the tets the cut splits: a tet with a face on the cut (a cut along a node layer) is
+  // not split (cut_class 0), yet the tet below the cut carries the jump across that face.
+  if (!cut || em.plain(t)) return;
   const CrackFront& front = em.cuts.empty() ? em.front : em.cuts[static_cast<std::size_t>(k)].front;
   TetCorners p;
   for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();

@@ -56,10 +56,10 @@ struct CutFacePoint {
 /// are the very points with which branch_gradient_integrals (consistent_gradients.h) integrates the
 /// cut's term in the shift of the rule of that order (sampled_gradients), so that a load on the faces and the stiffness agree to round-off
 /// (the superposition identity of docs/VERIFICATION.md). Linear integrands (the sign part of a
-/// load) are exact; the branch part (sqrt r N_l) converges with the order. Nothing for a tet the cut
-/// does not split (its cut_class for cut k is 0) or one without enriched DOFs. A polygon lying in a
-/// face of the tet (a cut along mesh faces) counts once, in the tet below the cut (the nodes on the
-/// cut are above: the tet above may carry no enriched DOF).
+/// load) are exact; the branch part (sqrt r N_l) converges with the order. Nothing for a tet without
+/// enriched DOFs. A polygon lying in a face of the tet (a cut along mesh faces) counts once, in the
+/// tet below the cut: the nodes on the cut are above, so the tet above may carry no enriched DOF,
+/// and the one below, which the cut does not split (cut_class 0), carries the jump.
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out);
 
 /// Every point of cut k's faces, tet after tet in increasing order.
