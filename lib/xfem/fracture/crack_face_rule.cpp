@@ -12,21 +12,6 @@
 namespace xfem {
 namespace {
 
-// Whether the polygon lies in the plane of one face of the tet p (within `tol`): a cut along mesh
-// faces, which the tet on the other side clips the same way (as cut_face_points counts it: half).
-bool in_a_face(const TetCorners& p, const Polygon& polygon, double tol) {
-  for (int skip = 0; skip < 4; ++skip) {
-    const Eigen::Vector3d& a = p[(skip + 1) % 4];
-    const Eigen::Vector3d n = (p[(skip + 2) % 4] - a).cross(p[(skip + 3) % 4] - a);
-    if (n.norm() == 0) continue;
-    const Eigen::Vector3d u = n.normalized();
-    bool all = true;
-    for (const Eigen::Vector3d& v : polygon) all = all && std::abs(u.dot(v - a)) <= tol;
-    if (all) return true;
-  }
-  return false;
-}
-
 // Whether the polygon's edge (p, q) runs along the front: its ends and midpoint within `tol` of it.
 bool on_front(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const std::vector<const FrontSegment*>& fronts,
               double tol) {
@@ -48,7 +33,7 @@ std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, c
   gauss_legendre_01(n, g, gw);
   const TriangleMesh& surface = em.cut->mesh();
   for (int t = 0; t < em.tets(); ++t) {
-    if (em.cut_class[static_cast<std::size_t>(t)] == 0 || em.plain(t)) continue;
+    if (em.plain(t)) continue;  // not only split tets: a face on the cut (cut_face_points)
     if (!wanted.empty() && !wanted[static_cast<std::size_t>(t)]) continue;
     TetCorners p;
     for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
@@ -62,8 +47,10 @@ std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, c
                                          surface.points.row(surface.triangles(tri, 1)).transpose(),
                                          surface.points.row(surface.triangles(tri, 2)).transpose());
       if (!(polygon_area(poly) > 1e-10 * h * h)) continue;
-      const double share = in_a_face(p, poly, tolerance) ? 0.5 : 1.0;
       const Eigen::Vector3d normal = em.cut->unit_normal(tri);
+      // A polygon in a face of the tet counts once, in the tet below the cut (cut_face_points).
+      const int off = corner_off_face_holding(p, poly, tolerance);
+      if (off >= 0 && normal.dot(p[static_cast<std::size_t>(off)] - poly[0]) > 0) continue;
       // The apex: the corner with the most front edges (both of a corner of the front), else where
       // polygon_fan_apex puts the singularity (a front piercing the polygon, a corner on the front).
       const std::size_t m = poly.size();
@@ -89,7 +76,7 @@ std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, c
               q.tet = t;
               q.x = apex + s * (B - apex) + s * tt * (C - B);
               q.normal = normal;
-              q.weight = share * gw[i1] * gw[i2] * area2 * s * 2.0 * sg * tau;
+              q.weight = gw[i1] * gw[i2] * area2 * s * 2.0 * sg * tau;
               if (q.weight > 0) out.push_back(q);
             }
       }

@@ -8,10 +8,7 @@
 #include "xfem/core/error.h"
 
 namespace xfem {
-namespace {
 
-// Closest point of triangle (a, b, c) to p, by the Voronoi regions of its vertices, edges and
-// face (Ericson, Real-Time Collision Detection, 5.1.5).
 Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                     const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
@@ -32,8 +29,6 @@ Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vecto
   const double denom = 1.0 / (va + vb + vc);
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
-
-}  // namespace
 
 PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
   const int nt = static_cast<int>(mesh.tets.rows());

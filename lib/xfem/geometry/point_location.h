@@ -7,6 +7,11 @@
 
 namespace xfem {
 
+/// The point of triangle (a, b, c) closest to p, by the Voronoi regions of its vertices, edges and
+/// face (Ericson, Real-Time Collision Detection, 5.1.5).
+Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                    const Eigen::Vector3d& c);
+
 /// Finds the tetrahedra of a mesh that contain a point, through a uniform grid of buckets over
 /// the tets' bounding boxes (about one tet per bucket): O(1) per query for well-shaped meshes.
 class PointLocator {

@@ -15,22 +15,6 @@ const CutSurface* surface_of(const EnrichedMesh& em, int k) {
   return em.cuts.empty() ? em.cut.get() : em.cuts[static_cast<std::size_t>(k)].cut.get();
 }
 
-// The corner of tet p opposite the face in whose plane every vertex of `polygon` lies (within
-// `tol`), or -1: a cut running along a mesh face, which the tet on the face's other side may clip
-// the same way.
-int corner_off_face_holding(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
-  for (int skip = 0; skip < 4; ++skip) {
-    const Eigen::Vector3d& a = p[(skip + 1) % 4];
-    const Eigen::Vector3d n = (p[(skip + 2) % 4] - a).cross(p[(skip + 3) % 4] - a);
-    if (n.norm() == 0) continue;
-    const Eigen::Vector3d u = n.normalized();
-    bool all = true;
-    for (const Eigen::Vector3d& v : polygon) all = all && std::abs(u.dot(v - a)) <= tol;
-    if (all) return skip;
-  }
-  return -1;
-}
-
 // The collapsed n x n Gauss rule of triangle (A, B, C), x = A + s (B - A) + s t (C - B), split
 // into four (at the edges' midpoints) first, recursively up to `depth` times, while a front
 // segment passes closer to it than its longest edge: F ~ sqrt(r) is nearly singular there.
@@ -62,6 +46,19 @@ void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eig
 }
 
 }  // namespace
+
+int corner_off_face_holding(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
+  for (int skip = 0; skip < 4; ++skip) {
+    const Eigen::Vector3d& a = p[(skip + 1) % 4];
+    const Eigen::Vector3d n = (p[(skip + 2) % 4] - a).cross(p[(skip + 3) % 4] - a);
+    if (n.norm() == 0) continue;
+    const Eigen::Vector3d u = n.normalized();
+    bool all = true;
+    for (const Eigen::Vector3d& v : polygon) all = all && std::abs(u.dot(v - a)) <= tol;
+    if (all) return skip;
+  }
+  return -1;
+}
 
 // Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
 // -1 if it misses the polygon.

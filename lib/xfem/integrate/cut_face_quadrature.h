@@ -47,6 +47,11 @@ struct CutFacePoint {
   double weight = 0.0;           ///< m^2, > 0
 };
 
+/// The corner of tet p opposite the face in whose plane every vertex of `polygon` lies (within
+/// `tol`), or -1: a cut running along a mesh face. Such a polygon belongs to the tet below the cut
+/// only (cut_face_points).
+int corner_off_face_holding(const std::array<Eigen::Vector3d, 4>& p, const std::vector<Eigen::Vector3d>& polygon, double tol);
+
 /// The integration points of cut `k`'s faces in tet t: the wound's own geometry, every triangle of
 /// the cut surface clipped to the tet (clip_triangle; a convex polygon), integrated by
 /// polygon_gauss_rule with max(m, 2) Gauss points per direction, m = consistent_face_points(order)
