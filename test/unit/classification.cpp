@@ -391,6 +391,28 @@ TEST_CASE("classification: without a cut everything is uncut and plain", "[class
   CHECK(c.front.empty());
 }
 
+namespace {
+
+// The incremental classification `a` equals the one from scratch `b`: every array, the counts and
+// the front.
+void check_same(const xfem::Classification& a, const xfem::Classification& b) {
+  CHECK(a.side == b.side);
+  CHECK(a.on_cut == b.on_cut);
+  CHECK(a.enrichment == b.enrichment);
+  CHECK(a.cut_class == b.cut_class);
+  CHECK(a.cut_edges == b.cut_edges);
+  CHECK(a.cut_faces == b.cut_faces);
+  CHECK(xfem::count_values(a.counts) == xfem::count_values(b.counts));
+  REQUIRE(a.front.segments().size() == b.front.segments().size());
+  for (std::size_t i = 0; i < a.front.segments().size(); ++i) {
+    CHECK(a.front.segments()[i].p0 == b.front.segments()[i].p0);
+    CHECK(a.front.segments()[i].p1 == b.front.segments()[i].p1);
+    CHECK(a.front.segments()[i].b == b.front.segments()[i].b);
+  }
+}
+
+}  // namespace
+
 TEST_CASE("classification: a growing cut classified incrementally equals classify at every step",
           "[classification][progressive_cut]") {
   // Blades moving through a box: along y at x = 0.43 (between nodes), at x = 0.5 (through a plane of
@@ -427,19 +449,7 @@ TEST_CASE("classification: a growing cut classified incrementally equals classif
       const xfem::CutSurface cut(xfem::cut_until(sweep, times, t[k]));
       const xfem::Classification a = growing.classify(cut, xfem::cut_until_ids(times, t[k]));
       const xfem::Classification b = xfem::classify(mesh, cut, options);
-      CHECK(a.side == b.side);
-      CHECK(a.on_cut == b.on_cut);
-      CHECK(a.enrichment == b.enrichment);
-      CHECK(a.cut_class == b.cut_class);
-      CHECK(a.cut_edges == b.cut_edges);
-      CHECK(a.cut_faces == b.cut_faces);
-      CHECK(xfem::count_values(a.counts) == xfem::count_values(b.counts));
-      REQUIRE(a.front.segments().size() == b.front.segments().size());
-      for (std::size_t i = 0; i < a.front.segments().size(); ++i) {
-        CHECK(a.front.segments()[i].p0 == b.front.segments()[i].p0);
-        CHECK(a.front.segments()[i].p1 == b.front.segments()[i].p1);
-        CHECK(a.front.segments()[i].b == b.front.segments()[i].b);
-      }
+      check_same(a, b);
       CHECK(b.counts.partial + b.counts.complete > 0);
       if (s.tip_radius > 0) CHECK(b.counts.radius_branch > 0);
       incremental += growing.stats().incremental;
@@ -479,18 +489,7 @@ TEST_CASE("classification: an organ's growing cut classified incrementally equal
     const xfem::CutSurface cut(xfem::cut_until(sweep, times, t[k]));
     const xfem::Classification a = growing.classify(cut, ids);
     const xfem::Classification b = xfem::classify(mesh, cut);
-    CHECK(a.side == b.side);
-    CHECK(a.on_cut == b.on_cut);
-    CHECK(a.enrichment == b.enrichment);
-    CHECK(a.cut_class == b.cut_class);
-    CHECK(a.cut_edges == b.cut_edges);
-    CHECK(a.cut_faces == b.cut_faces);
-    CHECK(xfem::count_values(a.counts) == xfem::count_values(b.counts));
-    REQUIRE(a.front.segments().size() == b.front.segments().size());
-    for (std::size_t i = 0; i < a.front.segments().size(); ++i) {
-      CHECK(a.front.segments()[i].p0 == b.front.segments()[i].p0);
-      CHECK(a.front.segments()[i].p1 == b.front.segments()[i].p1);
-    }
+    check_same(a, b);
     incremental += growing.stats().incremental;
     if (k + 4 >= t.size()) {  // the last steps: the blade's front far from most of the body
       judged_late += growing.stats().sides;
