@@ -13,6 +13,7 @@
 #include "xfem/core/error.h"
 #include "xfem/core/json_io.h"
 #include "xfem/system/linear_system.h"
+#include "xfem/io/label_image.h"
 #include "xfem/io/matrix_market.h"
 #include "xfem/system/problem.h"
 #include "xfem/io/vtk_io.h"
@@ -194,6 +195,8 @@ TEST_CASE("hostile: the fuzzing regressions are rejected cleanly", "[hostile][fu
       {"problem", [](const std::string& p) { xfem::read_problem(p); }},
       {"exact", [](const std::string& p) { xfem::read_exact_field(p); }},
       {"system", [](const std::string& p) { xfem::read_linear_system(system_dir(p)); }},
+      {"nrrd", [](const std::string& p) { xfem::read_label_image(p); }},
+      {"vti", [](const std::string& p) { xfem::read_label_image(p); }},
       {"msh", [](const std::string& p) {  // as fuzz_msh reads it: as a body, then as a cut
          try {
            xfem::read_tet_mesh(p);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include "xfem/core/atomic_file.h"
 #include "xfem/core/error.h"
+#include "xfem/io/vtk_xml_check.h"
 #include "xfem/io/label_image.h"
 
 namespace xfem {
@@ -207,12 +209,28 @@ LabelImageHeader nrrd_header(const std::string& path) {
   const bool detached = fields.count("data file") || fields.count("datafile");
   if (!detached && header_end == std::string::npos)
     throw Error(path + ": NRRD header has no end (no blank line before the data: truncated file?)");
+  // A header is text: VTK 9.1's reader loops for ever on a NUL byte in it (found by fuzz_nrrd).
+  const std::size_t header_size = header_end == std::string::npos ? pos : header_end;
+  for (std::size_t i = 0; i < header_size; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 32 && c != '\n' && c != '\r' && c != '\t') {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02x", c);
+      throw Error(path + ": NRRD header holds the control byte " + code + " at byte " + std::to_string(i) +
+                  " (a header is text: corrupt file?)");
+    }
+  }
   for (const char* f : {"dimension", "type", "sizes", "encoding"})
     if (!fields.count(f)) throw Error(path + ": NRRD header has no '" + f + "' field");
   LabelImageHeader h;
   h.format = "nrrd";
   const double dimension = number(fields["dimension"], path, "dimension");
   const VoxelType type = nrrd_type(fields["type"], path);
+  // VTK 9.1's reader reads that many numbers per vector of 'space origin' and 'space directions',
+  // whatever they hold: another count made it read out of bounds (SIGSEGV, found by fuzz_nrrd).
+  if (fields.count("space dimension") && number(fields["space dimension"], path, "space dimension") != 3)
+    throw Error(path + ": NRRD 'space dimension' is " + fields["space dimension"].substr(0, 20) +
+                ", not 3 (a 3D label map)");
   std::vector<double> sizes;
   for (const auto& w : words(fields["sizes"])) sizes.push_back(number(w, path, "sizes"));
   if (static_cast<double>(sizes.size()) != dimension)
@@ -502,6 +520,9 @@ LabelImageHeader vti_header(const std::string& path) {
       for (int c = 0; c < 3; ++c) h.direction(r, c) = d[3 * r + c];
   }
   check_direction(h.direction, path);
+  // Every count and binary array header against the file's size, as for .vtu (vtk_xml_check.h):
+  // VTK 9.1's reader allocates what a compressed array's header claims (found by fuzz_vti).
+  check_vtk_xml_sizes(path);
   // Whatever the encoding (raw, base64, zlib, ASCII), each voxel takes at least one byte before
   // compression: a file too small for that is truncated or lies about its extent.
   check_compressed_size(path, path, 0, static_cast<double>(h.dims[0]) * h.dims[1] * h.dims[2]);
