@@ -9,36 +9,13 @@
 #include "xfem/enrich/branch_functions.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/cut_face_quadrature.h"
+#include "xfem/integrate/polygon_split.h"
 #include "xfem/geometry/cut_pieces.h"
 #include "xfem/core/mesh.h"
 #include "xfem/geometry/tet_shape.h"
 
 namespace xfem {
 namespace {
-
-using Polygon = std::vector<Eigen::Vector3d>;
-
-// Sutherland-Hodgman: the parts of the convex polygon on either side of the plane (point, normal).
-void split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
-                   Polygon& above, Polygon& below) {
-  above.clear();
-  below.clear();
-  const std::size_t n = poly.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d& u = poly[i];
-    const Eigen::Vector3d& v = poly[(i + 1) % n];
-    double du = normal.dot(u - point), dv = normal.dot(v - point);
-    if (std::abs(du) <= tolerance) du = 0;
-    if (std::abs(dv) <= tolerance) dv = 0;
-    if (du >= 0) above.push_back(u);
-    if (du <= 0) below.push_back(u);
-    if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) {
-      const Eigen::Vector3d x = u + du / (du - dv) * (v - u);
-      above.push_back(x);
-      below.push_back(x);
-    }
-  }
-}
 
 // The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
 bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,

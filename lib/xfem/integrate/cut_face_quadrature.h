@@ -6,11 +6,9 @@
 
 #include "xfem/enrich/enriched_basis.h"
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/integrate/polygon_split.h"
 
 namespace xfem {
-
-/// A convex planar polygon, its corners in order.
-using Polygon = std::vector<Eigen::Vector3d>;
 
 /// Length of the segment (p, q) inside the convex polygon of unit normal `normal` (in its plane);
 /// -1 if it misses the polygon.

@@ -6,6 +6,7 @@
 
 #include "xfem/core/mesh.h"
 #include "xfem/geometry/tet_shape.h"
+#include "xfem/integrate/polygon_split.h"
 
 namespace xfem {
 
@@ -36,36 +37,6 @@ SideVolumes side_volumes(const TetMesh& mesh, const CutElementSplits& splits, in
 }
 
 namespace {
-
-using Polygon = std::vector<Eigen::Vector3d>;
-
-// The parts of the convex polygon on and above / on and below the plane (point, normal): corners
-// within `tolerance` of it count as on it and go to both, crossing edges add their crossing point to
-// both. Either part may have fewer than 3 corners (nothing of the polygon on that side). Returns
-// whether the plane crosses the polygon (corners beyond `tolerance` on both sides).
-bool split_polygon(const Polygon& poly, const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double tolerance,
-                   Polygon& above, Polygon& below) {
-  above.clear();
-  below.clear();
-  bool positive = false, negative = false;
-  const std::size_t n = poly.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector3d &u = poly[k], &v = poly[(k + 1) % n];
-    double du = normal.dot(u - point), dv = normal.dot(v - point);
-    if (std::abs(du) <= tolerance) du = 0;
-    if (std::abs(dv) <= tolerance) dv = 0;
-    positive = positive || du > 0;
-    negative = negative || du < 0;
-    if (du >= 0) above.push_back(u);
-    if (du <= 0) below.push_back(u);
-    if ((du > 0 && dv < 0) || (du < 0 && dv > 0)) {
-      const Eigen::Vector3d x = u + du / (du - dv) * (v - u);
-      above.push_back(x);
-      below.push_back(x);
-    }
-  }
-  return positive && negative;
-}
 
 // The parts of the convex polygon on either side of the plane (point, normal), corners within
 // `tolerance` of it on both; a polygon the plane does not cross (lying in it included) stays whole.
