@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
                                         "to xfem-classify")
       ->allow_extra_args(false);
   app.add_option("-p,--problem", problem_path, "problem description (problem.json: material with model, load_steps, "
-                                               "dirichlet, neumann, body_force)")->required();
+                                               "dirichlet, neumann, body_force, cut_loads: pressures follow the deformed "
+                                               "faces, contact: the gap in the reference configuration)")->required();
   app.add_option("-o,--output", run.output, "the solution u (.mtx, 3N values)")->required();
   app.add_option("--reactions", run.reactions_path, "nodal reaction forces r(u) - f on the constrained DOFs (.mtx)");
   app.add_option("--report", run.report_path, "JSON report: load steps, Newton iterations and residuals, reactions");
@@ -71,6 +72,14 @@ int main(int argc, char** argv) {
   app.add_option("--cg-rtol", cg.rtol, "PETSc: each linear solve's relative residual (default 1e-10; Newton's own "
                                        "--rtol decides convergence)")
       ->check(xfem::cli::range(1e-15, 1e-2));
+  app.add_option("--contact-tol", run.contact.tolerance, "contact (problem.json \"contact\"): the largest penetration "
+                 "accepted at each load step, metres (default 1e-8 of max |u| at that step)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--contact-updates", run.contact.max_updates, "contact: multiplier updates per load step at most "
+                 "(default 50)")
+      ->check(CLI::Range(1, 10000));
+  app.add_option("--contact-pressure", run.contact_pressure_path, "contact: also write the contact pressure of each "
+                 "contact node (Matrix Market, NP x cuts, Pa; as xfem-solve's) for xfem-visualize --contact-pressure");
   app.add_option("--ordering", run.ordering, "CHOLMOD's fill-reducing ordering: metis (default) or amd")
       ->check(CLI::IsMember({"metis", "amd"}));
   xfem::cli::add_threads_option(*tool);
@@ -83,7 +92,16 @@ int main(int argc, char** argv) {
     if (!run.report_path.empty()) xfem::cli::check_output(run.report_path, {".json"}, true);
     run.problem_path = problem_path;
     const xfem::Problem problem = xfem::read_problem(problem_path);
-    xfem::refuse_cut_loads_and_contact(problem, "xfem-newton has no follower load on the deformed faces and no contact");
+    if (!run.contact_pressure_path.empty()) {
+      xfem::cli::check_output(run.contact_pressure_path, {".mtx"}, true);
+      if (!problem.contact.on)
+        throw xfem::Error(problem_path + ": --contact-pressure: problem.json has no \"contact\"");
+    }
+    // Contact is iterated on CHOLMOD factorizations (its tangent's pattern grows by G^T G).
+    if (problem.contact.on && backend == "petsc")
+      throw xfem::Error(problem_path + ": contact between the cut's faces is solved by the cholmod backend only (give "
+                        "--backend cholmod)");
+    if (problem.contact.on) backend = "cholmod";
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     // Each tet's law (problem.json `materials`, checked against the mesh's regions); none: one law.
     const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);

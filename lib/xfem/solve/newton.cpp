@@ -25,6 +25,10 @@ struct StepContext {
   TangentSolver& solver;
   NewtonResult& result;
   double force_floor;  // the smallest force scale: mu L^2 1e-6 (a strain of 1e-6 across the body)
+  // The terms' explicit zeros (NewtonTerms::pattern): with the body's pattern, the one pattern of
+  // every matrix the solver sees, so that its analysis is reused; that matrix's non-zeros.
+  SparseMatrix extra_zeros = SparseMatrix();
+  long solve_nonzeros = -1;
   // The forces at `at_u` and, in K, the exact tangent there: computed together once per accepted
   // iterate (the line search's full step evaluates both), reused by the next iteration and by the
   // next load step, which starts where this one converged.
@@ -47,6 +51,22 @@ bool evaluate_at(StepContext& c, const Eigen::VectorXd& u, LoadStep& step) {
   c.at_u = u;
   c.evaluated = true;
   return true;
+}
+
+// The matrix of the linear solve: the body's tangent (both triangles), the terms' explicit zeros
+// and their tangent `extra` (full), always with the same pattern.
+SparseMatrix system_matrix(StepContext& c, const std::vector<Eigen::Triplet<double, int>>& extra) {
+  SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
+  if (c.problem.terms.empty()) return full;
+  SparseMatrix E(full.rows(), full.cols());
+  E.setFromTriplets(extra.begin(), extra.end());
+  SparseMatrix sum = full + c.extra_zeros;
+  sum = sum + E;
+  sum.makeCompressed();
+  if (c.solve_nonzeros < 0) c.solve_nonzeros = sum.nonZeros();
+  if (sum.nonZeros() != c.solve_nonzeros)
+    throw Error("Newton: the contact or follower-load tangent left the solve's pattern (internal error)");
+  return sum;
 }
 
 double norm_on(const Eigen::VectorXd& v, const std::vector<char>& is_fixed, bool fixed_ones) {
@@ -72,7 +92,11 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
     }
     r = c.r_at_u;
     R = r - fs;
-    const double scale = std::max({fs.norm(), norm_on(r, c.is_fixed, true), c.force_floor});
+    // Follower loads and contact: their forces in R, their tangent in `extra`.
+    std::vector<Eigen::Triplet<double, int>> extra;
+    double extra_forces = 0.0;
+    for (NewtonTerms* t : c.problem.terms) extra_forces = std::max(extra_forces, t->add(s, u, R, &extra));
+    const double scale = std::max({fs.norm(), extra_forces, norm_on(r, c.is_fixed, true), c.force_floor});
     const double residual = norm_on(R, c.is_fixed, false) / scale;
     std::vector<double> change(fixed.size());
     bool at_target = true;
@@ -108,7 +132,7 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
         ++step.projected;
         ++step.tangents;
       }
-      const SparseMatrix full = c.K.selfadjointView<Eigen::Lower>();
+      const SparseMatrix full = system_matrix(c, extra);
       try {
         du = c.solver.solve(full, -R, fixed, change, step);
         break;
@@ -147,7 +171,9 @@ bool newton_at(StepContext& c, double s, Eigen::VectorXd& u, LoadStep& step) {
         ++inverted;
         continue;
       }
-      accepted = !at_target || norm_on(r_trial - fs, c.is_fixed, false) <= before;
+      Eigen::VectorXd R_trial = r_trial - fs;
+      for (NewtonTerms* t : c.problem.terms) t->add(s, trial, R_trial, nullptr);
+      accepted = !at_target || norm_on(R_trial, c.is_fixed, false) <= before;
       if (accepted) step.iterations.back().step = alpha;
     }
     if (c.options.detail)
@@ -219,6 +245,8 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
                       pattern_matrix(em, problem.body->pattern, outer), solver, result,
                       std::max(1e-6 * problem.law.lame.mu * size * size, 1e-300)};
   for (long d : result.fixed) context.is_fixed[d] = 1;
+  context.extra_zeros = SparseMatrix(3 * em.n, 3 * em.n);
+  for (NewtonTerms* t : problem.terms) context.extra_zeros = context.extra_zeros + t->pattern(3 * em.n);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * em.n);
   const double full_step = 1.0 / options.load_steps;
   double done = 0.0, step = full_step;
@@ -227,13 +255,30 @@ NewtonResult solve_newton(const NonlinearProblem& problem, const NewtonOptions& 
     LoadStep attempt;
     attempt.load = s;
     Eigen::VectorXd next = u;
+    for (NewtonTerms* t : problem.terms) t->begin_step();
     attempt.converged = newton_at(context, s, next, attempt);
+    // Contact: the multipliers updated (Uzawa) and Newton again at s until the gaps are closed.
+    const auto changed = [&] {
+      bool any = false;
+      for (NewtonTerms* t : problem.terms) any = t->update(s, next, attempt) || any;
+      return any;
+    };
+    while (attempt.converged && changed()) attempt.converged = newton_at(context, s, next, attempt);
+    if (!attempt.converged)
+      for (NewtonTerms* t : problem.terms) t->reject_step();
     result.steps.push_back(attempt);
     if (attempt.converged) {
       u = next;
+      if (attempt.has_contact && options.info)
+        options.info("load " + cli::three_digits(s) + ": contact: " + std::to_string(attempt.active_points) +
+                     " nodes in contact, " + std::to_string(attempt.multiplier_updates) +
+                     " multiplier updates, largest penetration " + cli::three_digits(attempt.max_penetration) +
+                     " m (tolerance " + cli::three_digits(attempt.contact_tolerance) + " m), normal force " +
+                     cli::three_digits(attempt.contact_force) + " N");
       done = s;
       if (options.info)
-        options.info("load " + cli::three_digits(s) + ": " + std::to_string(attempt.iterations.size() - 1) +
+        options.info("load " + cli::three_digits(s) + ": " +
+                     std::to_string(attempt.iterations.size() - 1 - attempt.multiplier_updates) +
                      " Newton iterations, relative residual " + cli::three_digits(attempt.final_residual) + "; " +
                      std::to_string(attempt.tangents) + " tangents in " + cli::three_digits(attempt.assemble_seconds) +
                      " s, " + std::to_string(attempt.factorizations) +

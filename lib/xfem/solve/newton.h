@@ -10,6 +10,8 @@
 
 namespace xfem {
 
+class NewtonTerms;
+
 /// The nonlinear equilibrium r(u) = s f for load factors s rising to 1 in load steps, with the
 /// Dirichlet values of load factor s (a rotation is turned by s times its angle: dirichlet_data).
 struct NonlinearProblem {
@@ -19,9 +21,33 @@ struct NonlinearProblem {
   Eigen::VectorXd f;  ///< external loads at s = 1 (3N, N), proportional to s
   /// The constrained scalar DOFs (increasing, the same at every s) and their values at s.
   std::function<void(double s, std::vector<long>& fixed, std::vector<double>& values)> dirichlet;
+  /// Follower loads and contact (not owned), added in this order; empty: none.
+  std::vector<NewtonTerms*> terms;
 };
 
 struct LoadStep;
+
+/// Terms of the equilibrium beyond the body's forces and the dead loads s f (xfem-newton: the
+/// follower pressure on the cut's faces, contact between them; newton_terms.h). At load factor s
+/// and displacement u they add their share to the residual R = r(u) - s f and, with `K` non-null,
+/// to the tangent: triplets of the full matrix (both triangles) inside the body's pattern plus
+/// `pattern()`. After a load step has converged `update` may change their own state (the contact
+/// multipliers) and ask for Newton again at the same s.
+class NewtonTerms {
+ public:
+  virtual ~NewtonTerms() = default;
+  /// Adds to R; returns the size of the forces it added (for the residual's scale), N.
+  virtual double add(double s, const Eigen::VectorXd& u, Eigen::VectorXd& R,
+                     std::vector<Eigen::Triplet<double, int>>* K) const = 0;
+  /// Explicit zeros (full matrix) where the tangent may get entries the body's pattern lacks.
+  virtual SparseMatrix pattern(long dofs) const { return SparseMatrix(dofs, dofs); }
+  /// At a converged u of load factor s: true when the terms changed (Newton again at s); `step`
+  /// gets their record. Throws xfem::Error when they cannot converge.
+  virtual bool update(double /*s*/, const Eigen::VectorXd& /*u*/, LoadStep& /*step*/) { return false; }
+  /// Before a load step (save the state), after a failed one (restore it).
+  virtual void begin_step() {}
+  virtual void reject_step() {}
+};
 
 /// The linear solve of a Newton iteration: K du = rhs on the free DOFs with du = `change` on the
 /// `fixed` ones (K the tangent, both triangles, the same pattern every time). CHOLMOD
@@ -72,6 +98,11 @@ struct LoadStep {
   long linear_iterations = 0;  ///< PETSc: CG iterations of the step's solves (0 with CHOLMOD)
   int projected = 0;       ///< iterations that needed the projected tangent (element_forces.h)
   std::string failure;  ///< why it did not converge (empty when it did)
+  /// Contact (NewtonTerms::update): multiplier updates of the step, and its state at the end.
+  int multiplier_updates = 0;
+  long active_points = 0;
+  double max_penetration = 0.0, contact_force = 0.0, contact_tolerance = 0.0;
+  bool has_contact = false;
 };
 
 struct NewtonResult {

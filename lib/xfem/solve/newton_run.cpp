@@ -7,7 +7,11 @@
 #include "xfem/core/error.h"
 #include "xfem/core/seconds_since.h"
 #include "xfem/io/matrix_market.h"
+#include "xfem/solve/contact_pressure_file.h"
 #include "xfem/solve/newton.h"
+#include "xfem/solve/newton_follower_load.h"
+#include "xfem/system/contact_operator.h"
+#include "xfem/system/cut_loads.h"
 #include "xfem/system/assembly.h"
 #include "xfem/system/deformed_volume_at_points.h"
 #include "xfem/system/dirichlet_data.h"
@@ -29,7 +33,7 @@ Json steps_json(const std::vector<LoadStep>& steps) {
     }
     out.push_back({{"load", s.load},
                    {"converged", s.converged},
-                   {"iterations", static_cast<long>(s.iterations.size()) - 1},
+                   {"iterations", static_cast<long>(s.iterations.size()) - 1 - s.multiplier_updates},
                    {"relative_residuals", residuals},
                    {"line_search_steps", lengths},
                    {"projected_tangents", s.projected},
@@ -39,6 +43,12 @@ Json steps_json(const std::vector<LoadStep>& steps) {
                    {"assemble_seconds", s.assemble_seconds},
                    {"factor_seconds", s.factor_seconds},
                    {"solve_seconds", s.solve_seconds}});
+    if (s.has_contact)
+      out.back()["contact"] = {{"active_points", s.active_points},
+                               {"multiplier_updates", s.multiplier_updates},
+                               {"max_penetration", s.max_penetration},
+                               {"tolerance", s.contact_tolerance},
+                               {"force", s.contact_force}};
   }
   return out;
 }
@@ -63,6 +73,15 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   p.em = &em;
   p.law = law;
   p.f = load_vector(em, problem);
+  // The cuts' faces: tractions dead on the reference faces, pressures following the deformed faces.
+  add_dead_cut_tractions(em, problem, p.f);
+  const FollowerCutLoad follower = follower_cut_load(em, problem);
+  NewtonFollowerLoad follower_term(em, follower);
+  if (!follower.empty()) p.terms.push_back(&follower_term);
+  ContactOperator contact;
+  if (problem.contact.on) contact = run.materials ? contact_operator(em, problem, *run.materials) : contact_operator(em, problem);
+  NewtonContact contact_term(contact, em.np, run.contact);
+  if (problem.contact.on) p.terms.push_back(&contact_term);
   p.dirichlet = [&](double s, std::vector<long>& fixed, std::vector<double>& values) {
     dirichlet_data(em, problem, fixed, values, s);
   };
@@ -93,8 +112,11 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   if (!result.u.allFinite()) throw Error(problem.file + ": the solution is not finite; no output written");
 
   // Reactions: r(u) - f on the constrained DOFs, 0 on the free ones (the residual there).
+  // The loads at u: the follower pressure's at the deformed faces.
+  Eigen::VectorXd f = p.f;
+  add_follower_forces(em, follower, result.u, 1.0, f, nullptr);
   Eigen::VectorXd reactions = Eigen::VectorXd::Zero(3 * em.n);
-  for (long d : result.fixed) reactions[d] = result.r[d] - p.f[d];
+  for (long d : result.fixed) reactions[d] = result.r[d] - f[d];
   // Forces balance in the deformed body: moments about the origin at the nodes' current places.
   Eigen::MatrixXd coordinates = em.mesh.points;
   for (long k = 0; k < em.np; ++k) coordinates.row(k) += result.u.segment<3>(3 * k).transpose();
@@ -102,7 +124,7 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
       condition_reactions(dirichlet_groups(em.mesh, problem), reactions, coordinates);
   for (const Resultant& r : conditions) cli::info(describe_reaction(r, true));
   long iterations = 0;
-  for (const LoadStep& s : result.steps) iterations += static_cast<long>(s.iterations.size()) - 1;
+  for (const LoadStep& s : result.steps) iterations += static_cast<long>(s.iterations.size()) - 1 - s.multiplier_updates;
   // The volume the body keeps, on the solve's own points (deformed.vtu's straight-edged cells
   // differ where F varies: docs/VERIFICATION.md "Large deformation").
   const PointVolume volume = deformed_volume_at_points(em, body, result.u);
@@ -137,12 +159,40 @@ void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun&
   report["relative_residual"] = result.steps.back().final_residual;
   report["strain_energy"] = result.energy;
   report["min_det_F"] = result.min_J;
-  report["reactions"] = reactions_json(conditions, applied_load(p.f, coordinates), true);
+  report["reactions"] = reactions_json(conditions, applied_load(f, coordinates), true);
+  ContactOutcome touching;
+  if (!follower.empty()) {
+    const Eigen::Vector3d above = follower_face_force(follower, em, result.u);
+    report["cut_pressure"] = {{"points", static_cast<long>(follower.points.size())},
+                              {"reference_area", follower.area},
+                              {"force_on_faces_above", {above.x(), above.y(), above.z()}}};
+  }
+  if (problem.contact.on) {
+    touching = contact_term.outcome(result.u);
+    cli::info("contact: " + std::to_string(touching.active) + " of " + std::to_string(contact.points()) +
+              " contact nodes in contact (area " + cli::three_digits(touching.active_area) + " m^2), " +
+              std::to_string(touching.updates) + " multiplier updates; largest penetration " +
+              cli::three_digits(touching.max_penetration) + " m (tolerance " + cli::three_digits(touching.tolerance) +
+              " m), normal force " + cli::three_digits(touching.force) + " N");
+    const long M = contact.points();
+    report["contact"] = Json{{"points", M},
+                             {"area", M > 0 ? contact.weight.sum() : 0.0},
+                             {"active_points", touching.active},
+                             {"active_area", touching.active_area},
+                             {"multiplier_updates", touching.updates},
+                             {"max_penetration", touching.max_penetration},
+                             {"tolerance", touching.tolerance},
+                             {"opened_volume", touching.opened_volume},
+                             {"force", touching.force},
+                             {"max_pressure", M > 0 ? touching.pressure.maxCoeff() : 0.0},
+                             {"gap", "reference configuration (small sliding)"}};
+  }
   report["integrate_seconds"] = integrate_seconds;
   report["analyze_seconds"] = result.analyze_seconds;
   report["solve_seconds"] = solve_seconds;
   if (!run.root) return;  // rank 0 writes
   if (!run.reactions_path.empty()) write_vector(reactions, run.reactions_path);
+  if (!run.contact_pressure_path.empty()) write_contact_pressure(contact, touching.pressure, em.np, run.contact_pressure_path);
   write_vector(result.u, run.output, provenance_comments(solution_provenance(em, run.problem_path)));
   if (!run.report_path.empty()) write_json(report, run.report_path);
 }

@@ -5,6 +5,7 @@
 #include "xfem/core/json_io.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/solve/newton.h"
+#include "xfem/solve/newton_contact.h"
 #include "xfem/system/problem.h"
 
 namespace xfem {
@@ -27,6 +28,10 @@ struct NewtonRun {
   int processes = 1;
   /// False on the ranks of a PETSc run other than rank 0: they solve along and write nothing.
   bool root = true;
+  /// Contact (problem.json "contact"; newton_contact.h): its settings, and where to write the
+  /// contact pressure of each contact node (contact_pressure_file.h; empty: not written).
+  NewtonContactSettings contact;
+  std::string contact_pressure_path;
 };
 
 /// The large-deformation solve of `problem` on `em` (xfem-newton): the body integrated once with
@@ -35,7 +40,10 @@ struct NewtonRun {
 /// DOFs (each condition's resultant logged and reported), u.mtx with the fingerprints of the
 /// mesh, the cuts and the problem, and the report (the steps with their residual histories,
 /// factorizations, timings, the backend, the deformed volume on the points:
-/// deformed_volume_at_points). Progress on stderr per load step (cli::info) and per iteration
+/// deformed_volume_at_points). problem.json `cut_loads`: the pressures follow the deformed faces
+/// (follower_cut_load.h), the tractions are dead loads on the reference faces; `contact`: the
+/// faces' frictionless contact in the reference configuration (newton_contact.h), its outcome in
+/// report["contact"] and each step's. Progress on stderr per load step (cli::info) and per iteration
 /// (cli::detail). Throws xfem::Error, writing nothing, for the oversampling rule, a piece
 /// without a Dirichlet condition, or a Newton failure after the smallest step.
 void run_newton(const EnrichedMesh& em, const Problem& problem, const NewtonRun& run, Json& report);
