@@ -68,6 +68,11 @@ newton() {  # $1: name, $2: mesh, $3: problem, the rest: options
 }
 newton pressed enriched.vtu pressed.json --contact-pressure pressed-p.mtx
 newton pressed-uncut uncut.vtu pressed-uncut.json
+# xfem-visualize takes xfem-newton's contact pressure as xfem-solve's: on the wound, -P_zz = 30,887 Pa.
+"$B/xfem-visualize" enriched.vtu --cut crack.vtp --solution pressed.mtx --problem pressed.json \
+  --contact-pressure pressed-p.mtx --faces wound.vtp -o deformed.vtu 2> visualize.log || { cat visualize.log; fail "visualize"; }
+grep "contact pressure on the wound" visualize.log
+grep -q "contact pressure on the wound: largest 3.09e+04 Pa" visualize.log && [ -s wound.vtp ] || fail "visualize: contact pressure"
 newton opened enriched.vtu opened.json
 newton opened-off enriched.vtu opened-off.json
 newton turned through.vtu turned.json
