@@ -90,6 +90,18 @@ struct ContactSettings {
   bool on = false;            ///< off by default
   std::vector<int> cuts;      ///< the cuts whose faces may touch; empty with `on`: every cut
   double penalty = 1e5;       ///< kappa = penalty * E / h (h the cut tet's longest edge), Pa/m
+  /// Coulomb friction between the faces ("contact": {"friction": mu}, or one mu per cut of
+  /// "cuts"; docs/METHOD.md "Friction"): given (even 0) turns the frictional solve on.
+  bool friction_on = false;
+  std::vector<double> friction;  ///< one mu for every cut (size 1), or one per entry of `cuts`
+  /// The friction coefficient of cut k (0 without friction or for a cut out of contact).
+  double friction_of(int k) const {
+    if (!friction_on || !applies_to(k)) return 0.0;
+    if (friction.size() == 1) return friction[0];
+    for (std::size_t i = 0; i < cuts.size(); ++i)
+      if (cuts[i] == k) return friction[i];
+    return 0.0;
+  }
   /// Whether the faces of cut k may touch.
   bool applies_to(int k) const {
     if (!on) return false;
