@@ -516,6 +516,11 @@ void check_cut_indices(const Problem& problem, int cuts) {
                   std::to_string(problem.contact.cuts[i]) + ", but the mesh has " + range);
 }
 
+void refuse_friction(const Problem& problem, const std::string& reason) {
+  if (!problem.contact.friction_on) return;
+  throw Error(problem.file + ": " + reason + ": contact.friction is solved by xfem-solve only");
+}
+
 void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason) {
   if (problem.cut_loads.empty() && !problem.contact.on) return;
   throw Error(problem.file + ": " + reason + ": " + (problem.cut_loads.empty() ? "contact is" : problem.contact.on ? "cut_loads and contact are" : "cut_loads are") +

@@ -201,6 +201,11 @@ TetMaterials tet_materials(const Problem& problem, const TetMesh& mesh, const st
 /// "xfem-newton's follower loads on the deformed faces are not implemented".
 void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason);
 
+/// Refuses friction between the cuts' faces (problem.json "contact": {"friction": ...}) where a
+/// tool would ignore it: throws xfem::Error "<file>: <reason>: contact.friction is solved by
+/// xfem-solve only" (e.g. reason "xfem-newton solves frictionless contact").
+void refuse_friction(const Problem& problem, const std::string& reason);
+
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);
 
