@@ -6,9 +6,9 @@
 # tan beta = 1), the exact field on the boundary with the same friction ("friction" of the penny
 # field: the faces stick for mu >= tan beta, and slide by Segedin's jump of the effective shear
 # tau - mu |sigma_n| else). The stick/slip threshold:
-#  - mu = 1.2 tan beta: every node in contact sticks, the slip is the penalty's (below 1e-6 of the
-#    frictionless slip), and u equals the uncut body's uniform field (to 1e-6 of max |u|);
-#  - mu = 0.5 tan beta: the faces slip by half the frictionless slip, its error against the closed
+#  - mu = 1.2 tan beta: every node in contact sticks, the slip is the penalty's (below 1e-9 of the
+#    frictionless slip), and u equals the uncut body's uniform field (to 1e-9 of max |u|);
+#  - mu = 0.5 tan beta: the faces slip by half the frictionless slip (to 2 %), its error against the closed
 #    form within the frictionless run's (e2e.penny_closed) on the same mesh, the shear force mu x
 #    the normal force;
 #  - mu = 0 through the frictional solve equals the frictionless solve (to 1e-9 of max |u|).
@@ -84,7 +84,7 @@ assert report['0']['friction']['stick_points'] == 0
 c, f = report['1.2']['contact'], report['1.2']['friction']
 assert f['slip_points'] == 0 and f['stick_points'] == c['active_points'] >= 0.9 * c['points'], "all stick"
 slip0 = segedin(0, 0.5)
-assert f['max_slip'] < 1e-6 * slip0, f['max_slip']
+assert f['max_slip'] < 1e-9 * slip0, f['max_slip']  # measured 8.0e-12 m = 2e-11 slip(0)
 xyz = vector('1.2/system/coordinates.mtx')
 np_ = len(xyz) // 3
 sigma = [[0, 0, -0.5], [0, 0, 0], [-0.5, 0, -0.5]]
@@ -99,7 +99,7 @@ for n in range(np_):
 umax = max(abs(x) for x in u[:3 * np_])
 print("mu 1.2: original DOFs against the uniform field: %.2e of max |u|; largest enriched DOF %.2e of max |u|" % (
     worst / umax, max(abs(x) for x in u[3 * np_:]) / umax))
-assert worst < 1e-6 * umax, worst / umax
+assert worst < 1e-9 * umax, worst / umax  # measured 6.1e-12
 # mu = 0.5 tan beta: the faces slide by Segedin's jump of tau - mu |sigma_n| = 0.25 Pa, within the
 # frictionless run's error on this mesh (e2e.penny_closed: rms 17.7 %, max -28 %).
 m, rms = slip_errors('0.5', 0.25)
@@ -108,6 +108,11 @@ print("mu 0.5: slip error max %.4f rms %.4f (frictionless: max %.4f rms %.4f)" %
 assert rms < max(1.1 * rms0, rms0 + 0.01) and abs(m) < max(1.1 * abs(m0), abs(m0) + 0.01), "slip"
 c, f = report['0.5']['contact'], report['0.5']['friction']
 assert f['slip_points'] >= 0.75 * c['active_points'], "the faces slip"
+# Half the frictionless slip (tau - mu |sigma_n| = tau / 2): the largest weighted slip of the nodes
+# (measured 0.168 / 0.338 = 0.497; the discretisation errors of both runs nearly cancel).
+ratio = f['max_slip'] / report['0']['friction']['max_slip']
+print("mu 0.5: largest slip over the frictionless one %.4f" % ratio)
+assert abs(ratio - 0.5) < 0.02, ratio
 assert abs(f['shear_force'] / (0.5 * c['force']) - 1) < 0.05, "the friction force mu N"
 PY
 # The penny under a remote tension (data/penny_inclined.json) opens: friction on changes nothing.

@@ -7,6 +7,7 @@
 
 #include "enriched_test_meshes.h"
 #include "xfem/core/error.h"
+#include "xfem/fracture/exact_fields.h"
 #include "xfem/system/contact_operator.h"
 #include "xfem/system/problem.h"
 
@@ -112,4 +113,30 @@ TEST_CASE("friction: refused where a tool would ignore it", "[friction]") {
   CHECK_NOTHROW(xfem::refuse_friction(problem("true"), "xfem-newton solves frictionless contact"));
   CHECK_THROWS_WITH(xfem::refuse_friction(problem(R"({"friction": 0.2})"), "xfem-newton solves frictionless contact"),
                     Catch::Equals("p.json: xfem-newton solves frictionless contact: contact.friction is solved by xfem-solve only"));
+}
+
+TEST_CASE("friction: the penny field pressed shut with friction slides by the effective shear", "[friction]") {
+  xfem::PennyField p;
+  p.centre = Eigen::Vector3d(0.5, 0.5, 0.47);
+  p.radius = 0.3;
+  p.sigma = -0.5;
+  p.shear = Eigen::Vector3d(-0.5, 0, 0);
+  p.closed = true;
+  const Eigen::Vector3d x(0.95, 0.2, 0.9);  // on the box's boundary, 0.25 a and more from the disc
+  const Eigen::Vector3d free = p.displacement(x);
+  // The uniform field alone: sigma n n^T + tau n^T + n tau^T.
+  const Eigen::Vector3d n = p.normal, d = x - p.centre;
+  const Eigen::Matrix3d eps = p.sigma / p.E * ((1 + p.nu) * n * n.transpose() - p.nu * Eigen::Matrix3d::Identity()) +
+                              (1 + p.nu) / p.E * (p.shear * n.transpose() + n * p.shear.transpose());
+  const Eigen::Vector3d uniform = eps * d;
+  // mu >= tan beta = 1: the faces stick, the uniform field (as an uncut body).
+  p.friction = 1.2;
+  CHECK((p.displacement(x) - uniform).norm() < 1e-15);
+  p.friction = 1.0;
+  CHECK((p.displacement(x) - uniform).norm() < 1e-15);
+  // mu = 0.5: half the shear slides, so half the crack's perturbation.
+  p.friction = 0.5;
+  const Eigen::Vector3d half = p.displacement(x);
+  CHECK((half - uniform - 0.5 * (free - uniform)).norm() < 1e-12 * free.norm());
+  CHECK((free - uniform).norm() > 1e-3 * free.norm());  // the perturbation is there to halve
 }
