@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
     if (!run.report_path.empty()) xfem::cli::check_output(run.report_path, {".json"}, true);
     run.problem_path = problem_path;
     const xfem::Problem problem = xfem::read_problem(problem_path);
+    xfem::refuse_friction(problem, "xfem-newton solves frictionless contact");
     if (!run.contact_pressure_path.empty()) {
       xfem::cli::check_output(run.contact_pressure_path, {".mtx"}, true);
       if (!problem.contact.on)

@@ -13,6 +13,7 @@
 #include "xfem/solve/contact_solve.h"
 #include "xfem/solve/direct_backend.h"
 #include "xfem/solve/enriched_dof_fixes.h"
+#include "xfem/solve/friction_solve.h"
 #include "xfem/solve/petsc_backend.h"
 #include "xfem/solve/solution_output.h"
 #include "xfem/solve/solve_options.h"
@@ -93,7 +94,9 @@ int main(int argc, char** argv) {
     xfem::ContactOutcome touching;
     if (with_contact) {
       contact = xfem::read_contact_operator(o.dir, 3 * s.n);
-      u = xfem::solve_with_contact(s, contact, o.contact, o.ordering, !tool->quiet, report, &residual, &touching);
+      u = contact.has_friction()  // problem.json "contact": {"friction": mu}: Coulomb friction between the faces
+              ? xfem::solve_with_friction(s, contact, o.contact, o.ordering, !tool->quiet, report, &residual, &touching)
+              : xfem::solve_with_contact(s, contact, o.contact, o.ordering, !tool->quiet, report, &residual, &touching);
     }
     else if (o.backend == "cholmod") u = xfem::solve_with_cholmod(s, o.ordering, !tool->quiet, report, &residual);
 #if XFEM_SOLVE_LINKS_PETSC

@@ -142,6 +142,9 @@ bad "contact with PETSc" "pressed.json: contact between the cut's faces is solve
   enriched.vtu --cut crack.vtp --problem pressed.json --backend petsc
 bad "--contact-pressure without contact" "opened-off.json: --contact-pressure: problem.json has no \"contact\"" \
   enriched.vtu --cut crack.vtp --problem opened-off.json --contact-pressure p.mtx
+sed 's/"contact": true/"contact": {"friction": 0.3}/' pressed.json > friction.json
+bad "friction" "friction.json: xfem-newton solves frictionless contact: contact.friction is solved by xfem-solve only" \
+  enriched.vtu --cut crack.vtp --problem friction.json
 bad "contact that cannot converge" "contact: no convergence in 1 multiplier updates at load factor 0.5" \
   enriched.vtu --cut crack.vtp --problem pressed.json --contact-updates 1 --contact-tol 1e-30
 echo "PASS"

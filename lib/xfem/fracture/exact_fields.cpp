@@ -294,8 +294,16 @@ Eigen::Vector3d PennyField::displacement(const Eigen::Vector3d& x, int side) con
     if (std::abs(shear.dot(n)) > 1e-12 * shear.norm()) throw Error("penny field: shear must lie in the disc's plane");
     // The remote shear strain (tau n^T + n tau^T) (1 + nu) / E, then the slid crack's perturbation.
     const Eigen::Matrix3d eps = (1 + nu) / E * (shear * n.transpose() + n * shear.transpose());
-    u += (remote ? Eigen::Vector3d(eps * (x - centre)) : Eigen::Vector3d::Zero()) +
-         elliptical_jump_displacement(x, 16.0 * (1 - nu * nu) / (M_PI * (2 - nu) * E) * shear);
+    // Friction (closed faces) carries mu |sigma| of the shear: the rest slides (0: the faces stick).
+    const double sliding = closed && friction > 0 ? std::max(0.0, 1 - friction * std::abs(sigma) / shear.norm()) : 1.0;
+    if (sliding == 1.0)  // frictionless: the expression as before friction, bit for bit
+      u += (remote ? Eigen::Vector3d(eps * (x - centre)) : Eigen::Vector3d::Zero()) +
+           elliptical_jump_displacement(x, 16.0 * (1 - nu * nu) / (M_PI * (2 - nu) * E) * shear);
+    else if (sliding > 0)
+      u += Eigen::Vector3d(eps * (x - centre)) +
+           elliptical_jump_displacement(x, sliding * 16.0 * (1 - nu * nu) / (M_PI * (2 - nu) * E) * shear);
+    else
+      u += eps * (x - centre);
   }
   return u;
 }

@@ -87,6 +87,10 @@ struct PennyField {
   /// is the uniform field sigma n n^T alone (no Sneddon perturbation, no opening); the shear part
   /// is unchanged (frictionless faces slide freely by the elliptical jump above).
   bool closed = false;
+  /// With `closed`: Coulomb friction mu between the shut faces (issue 33). They carry mu |sigma|
+  /// of the shear, so they slide by the elliptical jump of the effective shear
+  /// tau (1 - mu |sigma| / |tau|) where that is positive, and stick (the uniform field alone) else.
+  double friction = 0.0;
 
   /// Displacement at x (metres; rigid motion: none, u(centre) = 0). `side` (+1 / -1) picks the
   /// face for a point in the disc's plane inside the disc (|z| <= 1e-12 a); 0: the +1 face.

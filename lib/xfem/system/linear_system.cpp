@@ -118,7 +118,8 @@ namespace fs = std::filesystem;
 // replaced (it is someone's data, not an older system).
 bool is_system_file(const std::string& name) {
   for (const char* known : {"K.mtx", "f.mtx", "dirichlet.mtx", "coordinates.mtx", "K.petsc", "f.petsc", "dirichlet_conditions.json", "provenance.json",
-                            "coordinates.petsc", "system.json", "contact_gap.mtx", "contact_points.mtx"})
+                            "coordinates.petsc", "system.json", "contact_gap.mtx", "contact_points.mtx", "contact_slip.mtx",
+                            "contact_friction.mtx"})
     if (name == known) return true;
   return false;
 }

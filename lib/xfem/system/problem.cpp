@@ -160,7 +160,7 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
     check_material(w, W.E, W.nu);
   } else if (n.has("penny")) {
     const Node w = n.at("penny");
-    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu", "loading"});
+    w.require_object({"centre", "normal", "radius", "sigma", "shear", "E", "nu", "loading", "friction"});
     f.kind = ExactField::Kind::Penny;
     PennyField& P = f.penny;
     if (w.has("centre")) P.centre = w.at("centre").vector3();
@@ -181,6 +181,11 @@ ExactField parse_exact(const Node& n, const std::optional<std::pair<double, doub
       P.closed = loading == "closed";  // faces pressed shut by a remote compression (contact)
       if (P.closed && !(P.sigma <= 0))
         w.at("sigma").fail("must be <= 0 with \"loading\": \"closed\" (faces pressed shut), got " + short_number(P.sigma));
+    }
+    if (w.has("friction")) {  // Coulomb friction between the shut faces (issue 33)
+      P.friction = w.at("friction").number();
+      if (!P.closed) w.at("friction").fail("needs \"loading\": \"closed\" (friction acts between shut faces)");
+      if (!(P.friction >= 0)) w.at("friction").fail("must be >= 0, got " + short_number(P.friction));
     }
     if (!material && !(w.has("E") && w.has("nu"))) w.fail("needs E and nu (the material of the field)");
     P.E = w.has("E") ? w.at("E").number() : material->first;
@@ -240,7 +245,27 @@ void parse_cut_loads(const Node& root, Problem& p) {
   }
 }
 
-// "contact": true | false | {"cuts": [0, 2], "penalty": 1e3} (ContactSettings).
+// "friction": mu | [mu per entry of "cuts"] inside "contact" (ContactSettings::friction): mu >= 0.
+void parse_friction(const Node& c, Problem& p) {
+  if (!c.has("friction")) return;
+  const Node f = c.at("friction");
+  const auto coefficient = [](const Node& n) {
+    const double mu = n.number();
+    if (!(mu >= 0.0 && mu <= 1e3)) n.fail("must lie in 0..1e3 (a friction coefficient), got " + n.j.dump());
+    return mu;
+  };
+  p.contact.friction_on = true;
+  if (!f.j.is_array()) {
+    p.contact.friction.push_back(coefficient(f));
+    return;
+  }
+  if (!c.has("cuts") || f.j.size() != p.contact.cuts.size())
+    f.fail("a list needs one coefficient per entry of \"cuts\" (" + std::to_string(p.contact.cuts.size()) +
+           "), got " + std::to_string(f.j.size()) + " (or give one number for every cut)");
+  for (std::size_t i = 0; i < f.j.size(); ++i) p.contact.friction.push_back(coefficient(f.at(i)));
+}
+
+// "contact": true | false | {"cuts": [0, 2], "penalty": 1e3, "friction": 0.3} (ContactSettings).
 void parse_contact(const Node& root, Problem& p) {
   if (!root.has("contact")) return;
   const Node c = root.at("contact");
@@ -249,14 +274,14 @@ void parse_contact(const Node& root, Problem& p) {
     return;
   }
   if (!c.j.is_object()) c.fail("must be true, false or an object {\"cuts\": [...], \"penalty\": ...}");
-  c.require_object({"cuts", "penalty"});
+  c.require_object({"cuts", "penalty", "friction"});
   if (c.has("penalty")) {
     p.contact.penalty = c.at("penalty").number();
     if (!(p.contact.penalty >= 1.0 && p.contact.penalty <= 1e8))
       c.at("penalty").fail("must lie in 1..1e8 (kappa = penalty E / h), got " + c.at("penalty").j.dump());
   }
   p.contact.on = true;
-  if (!c.has("cuts")) return;
+  if (!c.has("cuts")) return parse_friction(c, p);
   const Node cuts = c.at("cuts");
   if (cuts.array_size() == 0) cuts.fail("must list at least one cut index (or give \"contact\": false)");
   for (std::size_t i = 0; i < cuts.j.size(); ++i) {
@@ -265,12 +290,16 @@ void parse_contact(const Node& root, Problem& p) {
       if (other == k) cuts.at(i).fail("names cut " + std::to_string(k) + " twice");
     p.contact.cuts.push_back(k);
   }
+  parse_friction(c, p);
 }
 
 }  // namespace
 
 Problem parse_problem(const Json& j, const std::string& file) {
   const Node root{j, file, ""};
+  // Friction acts between faces in contact: its coefficient belongs to "contact".
+  if (root.has("friction"))
+    root.at("friction").fail("must be given inside \"contact\" (\"contact\": {\"friction\": mu}): friction needs contact");
   root.require_object({"description", "material", "materials", "integration", "dirichlet", "neumann", "body_force",
                        "load_steps", "cut_loads", "contact"});
   Problem p;
@@ -485,6 +514,11 @@ void check_cut_indices(const Problem& problem, int cuts) {
     if (problem.contact.cuts[i] >= cuts)
       throw Error(problem.file + ": contact.cuts[" + std::to_string(i) + "] is " +
                   std::to_string(problem.contact.cuts[i]) + ", but the mesh has " + range);
+}
+
+void refuse_friction(const Problem& problem, const std::string& reason) {
+  if (!problem.contact.friction_on) return;
+  throw Error(problem.file + ": " + reason + ": contact.friction is solved by xfem-solve only");
 }
 
 void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason) {

@@ -90,6 +90,18 @@ struct ContactSettings {
   bool on = false;            ///< off by default
   std::vector<int> cuts;      ///< the cuts whose faces may touch; empty with `on`: every cut
   double penalty = 1e5;       ///< kappa = penalty * E / h (h the cut tet's longest edge), Pa/m
+  /// Coulomb friction between the faces ("contact": {"friction": mu}, or one mu per cut of
+  /// "cuts"; docs/METHOD.md "Friction"): given (even 0) turns the frictional solve on.
+  bool friction_on = false;
+  std::vector<double> friction;  ///< one mu for every cut (size 1), or one per entry of `cuts`
+  /// The friction coefficient of cut k (0 without friction or for a cut out of contact).
+  double friction_of(int k) const {
+    if (!friction_on || !applies_to(k)) return 0.0;
+    if (friction.size() == 1) return friction[0];
+    for (std::size_t i = 0; i < cuts.size(); ++i)
+      if (cuts[i] == k) return friction[i];
+    return 0.0;
+  }
   /// Whether the faces of cut k may touch.
   bool applies_to(int k) const {
     if (!on) return false;
@@ -188,6 +200,11 @@ TetMaterials tet_materials(const Problem& problem, const TetMesh& mesh, const st
 /// cut_loads and contact are solved by xfem-assemble and xfem-solve only". `reason` says why, e.g.
 /// "xfem-newton's follower loads on the deformed faces are not implemented".
 void refuse_cut_loads_and_contact(const Problem& problem, const std::string& reason);
+
+/// Refuses friction between the cuts' faces (problem.json "contact": {"friction": ...}) where a
+/// tool would ignore it: throws xfem::Error "<file>: <reason>: contact.friction is solved by
+/// xfem-solve only" (e.g. reason "xfem-newton solves frictionless contact").
+void refuse_friction(const Problem& problem, const std::string& reason);
 
 /// "<file>: dirichlet[i]" plus " ('name')" when the condition has a name.
 std::string describe(const Problem& p, const char* list, std::size_t i);
