@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "xfem/enrich/classification.h"
+#include "xfem/enrich/growing_classification.h"
 #include "xfem/system/dirichlet.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/solve/incremental_schur.h"
