@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "xfem/core/thread_limit.h"
-#include "xfem/enrich/classification.h"
+#include "xfem/enrich/growing_classification.h"
 #include "xfem/generate/cut_sweep.h"
 #include "xfem/io/vtk_io.h"
 

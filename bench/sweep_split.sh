@@ -2,8 +2,9 @@
 # Where a sweep step's time goes (issue 35): xfem-sweep runs of one or two builds, alternated, on one
 # body and sweep, then per build the median over each run's cutting steps of every part of the
 # report's `split` (classify, enrich, integrate, gather, Schur update, solve, back-substitution,
-# frame) and of the step's wall time, with the load at each run's start (docs/PERFORMANCE.md,
-# "Progressive cutting"). A build whose reports have no `split` (before issue 35) is split from
+# frame), of the step's wall time and (reports from issue 35's third round on) of the process's CPU
+# time during the step (every thread's: the measure the load hardly changes), with the load at each
+# run's start (docs/PERFORMANCE.md, "Progressive cutting"). A build whose reports have no `split` (before issue 35) is split from
 # its older fields (classify with enrich; back-substitution with the frame).
 #   bench/sweep_split.sh OUT BODY SWEEP PROBLEM STEPS RUNS XFEM_SWEEP [XFEM_SWEEP_B]
 set -eu
@@ -36,7 +37,9 @@ for b in range(1, builds + 1):
         steps = [s for s in rep["steps"] if s["enriched_dofs"] > 0]
         med = {p: statistics.median(split(s)[p] for s in steps) for p in parts}
         wall = statistics.median(s["step_seconds"] for s in steps)
+        cpu = (f", step CPU {1e3 * statistics.median(s['step_cpu_seconds'] for s in steps):.1f} ms"
+               if "step_cpu_seconds" in steps[0] else "")
         integrated = statistics.median(s["recomputed_tets"] for s in steps)
-        print(f"build {b} run {r}: {len(steps)} steps, step wall {1e3 * wall:.1f} ms, tets integrated {integrated:.0f}; " +
+        print(f"build {b} run {r}: {len(steps)} steps, step wall {1e3 * wall:.1f} ms{cpu}, tets integrated {integrated:.0f}; " +
               ", ".join(f"{p} {1e3 * med[p]:.1f}" for p in parts) + " (ms, medians)")
 PY

@@ -74,6 +74,13 @@ grep -q 'compressor="vtkZLibDataCompressor"' "$S/quiet/step_003.vtu" || fail "--
 [ "$(grep -c "<DataSet timestep=" "$S/frames/sweep.pvd")" -eq 10 ] || fail "sweep.pvd: 5 steps x (body, wound)"
 grep -q '"enriched_dofs"' "$S/report.json" || fail "report"
 [ "$(grep -o '"step_seconds"' "$S/report.json" | wc -l)" -eq 5 ] || fail "report: step_seconds per step"
+python3 - "$S/report.json" <<'PY2' || fail "report: step_cpu_seconds per step, positive, and their median"
+import json, sys
+r = json.load(open(sys.argv[1]))
+cpu = [s["step_cpu_seconds"] for s in r["steps"]]
+assert len(cpu) == 5 and all(c > 0 for c in cpu), cpu
+assert r["median_step"]["cpu_seconds"] > 0
+PY2
 # A frame that cannot be written (it is written while the next step is solved): a clear error, exit 1.
 mkdir -p "$S/blocked/step_003.vtu"
 "$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$P" --steps 5 -o "$S/blocked" 2>"$S/err.txt"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enrich/classification.h"
+#include "xfem/enrich/growing_classification.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

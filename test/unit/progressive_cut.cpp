@@ -194,9 +194,16 @@ TEST_CASE("progressive cut: every step of a sweep equals the whole system's solu
     // the frame in another thread); `twin`, with the same history, completes every step itself.
     xfem::ProgressiveCut sweeping(body), twin(body);
     if (prepared) {
+      // `twin` classifies the sweep's cuts from one another (GrowingCutClassifier), `sweeping` each
+      // from scratch: the same region in the same order, or the steps' bits below would differ.
+      std::vector<std::vector<int>> ids;
+      for (double tk : t) ids.push_back(xfem::cut_until_ids(times, tk));
+      const std::vector<std::vector<int>> none;  // not one list per cut: refused before any work
+      CHECK_THROWS_WITH(twin.prepare(all, {}, &none), Catch::Contains("0 triangle id lists for"));
       sweeping.prepare(all);
-      twin.prepare(all);
+      twin.prepare(all, {}, &ids);
       CHECK(sweeping.region_size() > 0);
+      CHECK(twin.region_size() == sweeping.region_size());
     }
     long reused_tets = 0, kept_dofs = 0;
     for (int k : order) {

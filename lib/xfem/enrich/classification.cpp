@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/enrich/classification.h"
 
+#include "xfem/enrich/growing_classification.h"
+
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -220,64 +222,8 @@ std::vector<char> front_contact(const TetMesh& mesh, const CrackFront& front, co
   return contact;
 }
 
-}  // namespace
-
-/// What classify keeps for the next cut of a growing sequence: the mesh's unique edges and each
-/// tet's edges (the mesh alone), and the previous cut's exact geometric answers.
-struct GrowingCutClassifier::Memory {
-  std::vector<std::uint64_t> unique;  // the mesh's edges, sorted keys
-  std::vector<int> tet_edges;         // 6 per tet: index into `unique`
-  std::vector<char> on_cut;           // per point: meets the previous cut (before D1's snapping)
-  std::vector<char> meets;            // per edge: meets the previous cut (-1: not tested, D2)
-  std::vector<double> above, below;   // per tet: volumes on each side of the previous cut
-  std::vector<char> split;            // per tet: 1 where above/below hold the previous cut's volumes
-  bool classified = false;            // the above hold a cut's answers
-  std::vector<int> ids;               // the previous cut's triangle ids, increasing
-  std::vector<std::array<double, 9>> corners;  // their corners, in the order of `ids`
-  // GrowingCutClassifier only (keep_distances): per point its distance to the previous cut and its
-  // side (before D1's snapping), so that a point no new triangle comes as close to keeps its side.
-  bool keep_distances = false;
-  std::vector<double> distance;
-  std::vector<int> side;
-  std::vector<double> support;        // per point: its support's volume (the mesh alone), once
-};
-
-namespace {
-
-using Box = Eigen::Matrix<double, 3, 2>;  // columns lo, hi
-
-// The boxes of the triangles added since the previous cut, and their union.
-struct Growth {
-  std::vector<Box> boxes;
-  std::vector<std::array<Eigen::Vector3d, 3>> corners;  // of each new triangle, in the order of `boxes`
-  Box all;
-  // Does the closed box [lo - grow, hi + grow] meet a new triangle's box?
-  bool near(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double grow = 0) const {
-    const auto meets = [&](const Box& b) {
-      return (b.col(0).array() <= hi.array() + grow).all() && (b.col(1).array() >= lo.array() - grow).all();
-    };
-    if (!meets(all)) return false;
-    for (const Box& b : boxes)
-      if (meets(b)) return true;
-    return false;
-  }
-  // The distance from x to the nearest new triangle, or `bound` when none is nearer than that.
-  double distance(const Eigen::Vector3d& x, double bound) const;
-};
-
-double Growth::distance(const Eigen::Vector3d& x, double bound) const {
-  double d = bound;
-  for (std::size_t k = 0; k < boxes.size(); ++k) {
-    const Box& b = boxes[k];
-    if (((b.col(0) - x).array() > d).any() || ((x - b.col(1)).array() > d).any()) continue;  // its box is farther
-    const auto& t = corners[k];
-    d = std::min(d, (closest_on_triangle(x, t[0], t[1], t[2]) - x).norm());
-  }
-  return d;
-}
-
 // The mesh's unique edges and each tet's edges into `memory`.
-void find_edges(const TetMesh& mesh, GrowingCutClassifier::Memory& memory) {
+void find_edges(const TetMesh& mesh, ClassificationMemory& memory) {
   const long T = mesh.tets.rows();
   std::vector<std::uint64_t> keys;
   keys.reserve(6 * T);
@@ -294,12 +240,14 @@ void find_edges(const TetMesh& mesh, GrowingCutClassifier::Memory& memory) {
   memory.unique = std::move(unique);
 }
 
+}  // namespace
+
 // classify(), with the mesh's edges from `memory` and, when `growth` is given (the cut is the
 // previous one of `memory` plus the triangles of `growth`), the previous cut's answers away from the
 // new triangles. Leaves this cut's answers in `memory`.
 Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options,
-                             GrowingCutClassifier::Memory& memory, const Growth* growth,
-                             GrowingCutClassifier::Stats& stats) {
+                             ClassificationMemory& memory, const CutGrowth* growth,
+                             ClassifyWork& stats) {
   const long V = mesh.points.rows(), T = mesh.tets.rows();
   Classification c;
   std::atomic<long> tested_points{0}, tested_edges{0}, tested_tets{0};
@@ -586,74 +534,10 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
   return c;
 }
 
-}  // namespace
-
 Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options) {
-  GrowingCutClassifier::Memory memory;
-  GrowingCutClassifier::Stats stats;
+  ClassificationMemory memory;
+  ClassifyWork stats;
   return classify_with(mesh, cut, options, memory, nullptr, stats);
-}
-
-GrowingCutClassifier::GrowingCutClassifier(const TetMesh& mesh, const ClassifyOptions& options)
-    : mesh_(&mesh), options_(options), memory_(std::make_unique<Memory>()) {
-  memory_->keep_distances = true;
-}
-GrowingCutClassifier::~GrowingCutClassifier() = default;
-GrowingCutClassifier::GrowingCutClassifier(GrowingCutClassifier&&) noexcept = default;
-GrowingCutClassifier& GrowingCutClassifier::operator=(GrowingCutClassifier&&) noexcept = default;
-
-Classification GrowingCutClassifier::classify(const CutSurface& cut, const std::vector<int>& ids) {
-  const TriangleMesh& tm = cut.mesh();
-  const long F = tm.triangles.rows();
-  if (static_cast<long>(ids.size()) != F)
-    throw Error("GrowingCutClassifier: " + std::to_string(ids.size()) + " triangle ids for " + std::to_string(F) +
-                " triangles");
-  // The triangles by id, with their corners; the new ones are those the previous cut lacked.
-  std::vector<std::pair<int, std::array<double, 9>>> now(static_cast<std::size_t>(F));
-  for (long k = 0; k < F; ++k) {
-    now[k].first = ids[k];
-    for (int c = 0; c < 3; ++c)
-      for (int i = 0; i < 3; ++i) now[k].second[3 * c + i] = tm.points(tm.triangles(k, c), i);
-  }
-  std::sort(now.begin(), now.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (long k = 1; k < F; ++k)
-    if (now[k].first == now[k - 1].first)
-      throw Error("GrowingCutClassifier: triangle id " + std::to_string(now[k].first) + " given twice");
-  Memory& m = *memory_;
-  bool grows = m.classified;
-  Growth growth;
-  growth.all.col(0).setConstant(1e300);
-  growth.all.col(1).setConstant(-1e300);
-  std::size_t old = 0;
-  for (const auto& [id, corners] : now) {
-    if (old < m.ids.size() && m.ids[old] == id) {
-      grows = grows && m.corners[old] == corners;
-      ++old;
-      continue;
-    }
-    if (old < m.ids.size() && m.ids[old] < id) grows = false;  // an old triangle is missing
-    Box b;
-    for (int i = 0; i < 3; ++i) {
-      b(i, 0) = std::min({corners[i], corners[3 + i], corners[6 + i]});
-      b(i, 1) = std::max({corners[i], corners[3 + i], corners[6 + i]});
-    }
-    growth.all.col(0) = growth.all.col(0).cwiseMin(b.col(0));
-    growth.all.col(1) = growth.all.col(1).cwiseMax(b.col(1));
-    growth.boxes.push_back(b);
-    growth.corners.push_back({Eigen::Vector3d(corners[0], corners[1], corners[2]),
-                              Eigen::Vector3d(corners[3], corners[4], corners[5]),
-                              Eigen::Vector3d(corners[6], corners[7], corners[8])});
-  }
-  grows = grows && old == m.ids.size();
-  m.ids.clear();
-  m.corners.clear();
-  m.classified = false;  // until classify_with has finished (it may throw)
-  Classification c = classify_with(*mesh_, cut, options_, m, grows ? &growth : nullptr, stats_);
-  for (const auto& [id, corners] : now) {
-    m.ids.push_back(id);
-    m.corners.push_back(corners);
-  }
-  return c;
 }
 
 Classification classify_without_cut(const TetMesh& mesh) {

@@ -68,48 +68,6 @@ struct Classification {
 /// crack-tip frames of their branch nodes.
 Classification classify(const TetMesh& mesh, const CutSurface& cut, const ClassifyOptions& options = {});
 
-/// classify() for a cut that grows from call to call (progressive cutting: the blade adds triangles,
-/// none moves or goes away). The mesh's edges are found once, and what classify computes from the
-/// cut's geometry near each point, edge and tet (a point on the cut, an edge meeting it, the volumes
-/// a tet has on each side) is kept from the previous call and computed anew only near the triangles
-/// added since: a point or edge whose box misses every new triangle's box meets the grown cut iff it
-/// met the old one (exact predicates on closed triangles); a tet's volumes are reused when no new
-/// triangle's box comes within the tet's longest edge of its box (its pieces and their sides, judged
-/// at the closest cut point, cannot change); a point's side is reused when no new triangle's box
-/// comes as close to it as the previous cut was (its closest cut point and that point's
-/// pseudo-normal stay). The front and everything derived are computed as classify() does. The result equals classify(mesh, cut, options) exactly (test/unit/classification.cpp).
-class GrowingCutClassifier {
- public:
-  /// `mesh` must outlive the classifier.
-  explicit GrowingCutClassifier(const TetMesh& mesh, const ClassifyOptions& options = {});
-  ~GrowingCutClassifier();
-  GrowingCutClassifier(GrowingCutClassifier&&) noexcept;
-  GrowingCutClassifier& operator=(GrowingCutClassifier&&) noexcept;
-
-  /// classify(mesh, cut, options). `ids[k]` names triangle k of `cut` from call to call (its index
-  /// in the sweep: cut_until_ids); a cut holding every triangle of the previous call, each with the
-  /// same id and the same corners, is classified incrementally, any other cut from scratch.
-  Classification classify(const CutSurface& cut, const std::vector<int>& ids);
-
-  /// What the last call did: 1 if incrementally; points, edges and tets whose geometry was tested
-  /// anew; points whose side was judged anew (a new triangle came as close to them as the previous
-  /// cut was: their closest cut point may have moved).
-  struct Stats {
-    bool incremental = false;
-    long points = 0, edges = 0, tets = 0;
-    long sides = 0;
-  };
-  const Stats& stats() const { return stats_; }
-
-  struct Memory;  // what is kept from call to call (classification.cpp)
-
- private:
-  const TetMesh* mesh_;
-  ClassifyOptions options_;
-  std::unique_ptr<Memory> memory_;
-  Stats stats_;
-};
-
 /// The classification of a mesh without a cut (e.g. a cut-aligned mesh whose cut is modelled by
 /// doubled nodes): every tet uncut, every side +1, no enrichment, no front; N = NP downstream.
 Classification classify_without_cut(const TetMesh& mesh);

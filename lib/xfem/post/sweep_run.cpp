@@ -2,6 +2,7 @@
 #include "xfem/post/sweep_run.h"
 
 #include <algorithm>
+#include <ctime>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -136,6 +137,15 @@ void run_sweep(const SweepOptions& o) {
   // Step k's wall time: from the start of its solution to the start of the next one's (for the
   // last, to every frame written), its share of the sweep's whole time.
   std::vector<double> wall(static_cast<std::size_t>(steps), 0.0);
+  // And the CPU time the process spent meanwhile (every thread: the step's, the frames'): the
+  // step's work, which unlike its wall time does not grow with the other programs' load on the
+  // machine (docs/PERFORMANCE.md measures on a shared one).
+  const auto process_cpu = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+  std::vector<double> cpu(static_cast<std::size_t>(steps), 0.0);
   // The steps' and the frames' BLAS on one thread each (IncrementalSchur::update splits its
   // products between threads of ours): OpenBLAS's own threads would have their caller spin on
   // sched_yield while it waits for them, on the core the frames and the next step's element
@@ -156,6 +166,7 @@ void run_sweep(const SweepOptions& o) {
   const std::size_t most_waiting = background ? 2 : 0;
   for (int k = 1; k <= steps; ++k) {
     start = cli::now();
+    const double cpu_start = process_cpu();
     const bool solved_first = k == steps && last;  // for the pictures' camera, above
     auto step = solved_first ? std::move(last) : std::make_unique<CutSolution>(sweep_steps.solve(k));
     const double solved = solved_first ? last_solved : cli::now() - start;
@@ -168,15 +179,21 @@ void run_sweep(const SweepOptions& o) {
     if (k == steps)
       while (frames.size() > 0) finish(frames.take());
     wall[k - 1] = cli::now() - start;
+    cpu[k - 1] = process_cpu() - cpu_start;
   }
-  for (int k = 1; k <= steps; ++k) report["steps"][k - 1]["step_seconds"] = wall[k - 1];
+  for (int k = 1; k <= steps; ++k) {
+    report["steps"][k - 1]["step_seconds"] = wall[k - 1];
+    report["steps"][k - 1]["step_cpu_seconds"] = cpu[k - 1];
+  }
   if (!cutting.empty()) {  // the sweep's time split: per part, its median over the steps that cut
     std::vector<StepSplit> splits;
-    std::vector<double> walls;
+    std::vector<double> walls, cpus;
     for (const auto& [k, split] : cutting) {
       splits.push_back(split);
       walls.push_back(wall[k - 1]);
+      cpus.push_back(cpu[k - 1]);
     }
+    std::sort(cpus.begin(), cpus.end());
     std::sort(walls.begin(), walls.end());
     const std::size_t h = walls.size() / 2;
     const double median_wall = walls.size() % 2 ? walls[h] : 0.5 * (walls[h - 1] + walls[h]);
@@ -185,6 +202,7 @@ void run_sweep(const SweepOptions& o) {
     report["median_step"] = split_json(median);
     report["median_step"]["steps"] = static_cast<long>(splits.size());
     report["median_step"]["wall_seconds"] = median_wall;
+    report["median_step"]["cpu_seconds"] = cpus.size() % 2 ? cpus[h] : 0.5 * (cpus[h - 1] + cpus[h]);
   }
   write_paraview_collection(collection, files.in_dir("sweep.pvd"));
   if (!o.report_path.empty()) write_json(report, o.report_path);

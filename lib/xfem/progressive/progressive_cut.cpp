@@ -335,7 +335,13 @@ ProgressiveCut::ProgressiveCut(const UncutBody& body, const ClassifyOptions& opt
       faces_(shared_faces(body.mesh)) {}
 
 void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
-                             const std::function<void(double)>& progress) {
+                             const std::function<void(double)>& progress, const std::vector<std::vector<int>>* ids) {
+  if (ids && ids->size() != cuts.size())
+    throw Error("ProgressiveCut::prepare: " + std::to_string(ids->size()) + " triangle id lists for " +
+                std::to_string(cuts.size()) + " cuts");
+  // The cuts of a sweep grow: each classified from the previous one (classify() from scratch each
+  // time found the mesh's edges again and judged every point: most of this loop's time).
+  GrowingCutClassifier growing(body_.mesh, options_);
   // The region: free original DOFs of the tets with enriched DOFs at some step (a step's front
   // enriches tets around it that the whole sweep's cut does not: the union over the steps), in the
   // order of the step that first reaches them, so that a step reads only a leading block of the
@@ -343,9 +349,11 @@ void ProgressiveCut::prepare(const std::vector<std::shared_ptr<const CutSurface>
   std::vector<int> region;
   std::vector<char> in_region(body_.free_dofs.size(), 0);
   long most_enriched = 0;  // scalar enriched DOFs of the largest step: S's size at most
-  for (const auto& cut : cuts) {
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    const auto& cut = cuts[i];
     if (!cut || cut->mesh().triangles.rows() == 0) continue;
-    const EnrichedMesh em = enriched_mesh(body_.mesh, classify(body_.mesh, *cut, options_), cut);
+    const EnrichedMesh em =
+        enriched_mesh(body_.mesh, ids ? growing.classify(*cut, (*ids)[i]) : classify(body_.mesh, *cut, options_), cut);
     most_enriched = std::max(most_enriched, 3 * (em.n - em.np));
     const std::size_t first_new = region.size();
     for (int t = 0; t < em.tets(); ++t)

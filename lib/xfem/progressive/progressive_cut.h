@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "xfem/enrich/classification.h"
+#include "xfem/enrich/growing_classification.h"
 #include "xfem/system/dirichlet.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/solve/incremental_schur.h"
@@ -117,8 +117,10 @@ class ProgressiveCut {
   /// of the sweep) couple to enriched DOFs, once: after it, a step needs one solve with the factor.
   /// Optional (a step extends the region by what it needs), but without it the steps pay for their
   /// new region DOFs (a solve each, in blocks).
+  /// With `ids` (ids[i] names the triangles of cuts[i] as step() takes them), a cut that holds the
+  /// previous one is classified by a GrowingCutClassifier from it (the same classification).
   void prepare(const std::vector<std::shared_ptr<const CutSurface>>& cuts,
-               const std::function<void(double)>& progress = {});
+               const std::function<void(double)>& progress = {}, const std::vector<std::vector<int>>* ids = nullptr);
   long region_size() const { return schur_.region_size(); }
 
   /// Solves the cut `cut` whose triangle k is triangle `ids[k]` of the sweep (the identity of a

@@ -15,8 +15,12 @@ long SweepSteps::prepare(const std::function<void(double)>& progress) {
   if (!incremental()) return 0;
   progressive_ = std::make_unique<ProgressiveCut>(body_);
   std::vector<std::shared_ptr<const CutSurface>> cuts;
-  for (double tk : t_) cuts.push_back(std::make_shared<const CutSurface>(cut_until(sweep_, times_, tk)));
-  progressive_->prepare(cuts, progress);
+  std::vector<std::vector<int>> ids;
+  for (double tk : t_) {
+    cuts.push_back(std::make_shared<const CutSurface>(cut_until(sweep_, times_, tk)));
+    ids.push_back(cut_until_ids(times_, tk));
+  }
+  progressive_->prepare(cuts, progress, &ids);
   return progressive_->region_size();
 }
 

@@ -139,15 +139,25 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
         if (w != q) S_.col(w).head(m_) = S_.col(q).head(m_);
         ++w;
       }
+    // The rows, column by column (contiguous in memory; a row of S spans m columns of stride
+    // capacity: moved row by row, every element was a cache miss).
+    std::vector<std::pair<long, long>> moves;  // (to, from), to < from, increasing
     w = p;
     for (long q = p; q < m_; ++q)
       if (kept[q]) {
-        if (w != q) {
-          S_.row(w).head(m_kept) = S_.row(q).head(m_kept);
-          L_.row(w).head(p) = L_.row(q).head(p);
-        }
+        if (w != q) moves.emplace_back(w, q);
         ++w;
       }
+    if (!moves.empty()) {
+      for (long c = 0; c < m_kept; ++c) {
+        double* s = S_.col(c).data();
+        for (const auto& [to, from] : moves) s[to] = s[from];
+      }
+      for (long c = 0; c < p; ++c) {
+        double* l = L_.col(c).data();
+        for (const auto& [to, from] : moves) l[to] = l[from];
+      }
+    }
   }
   std::vector<EnrichedColumn> order;
   order.reserve(static_cast<std::size_t>(m));
