@@ -224,8 +224,8 @@ std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std:
 
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out) {
   const CutSurface* cut = surface_of(em, k);
-  // Not only the tets the cut splits: a tet with a face on the cut (a cut along a node layer) is
-  // not split (cut_class 0), yet the tet below the cut carries the jump across that face.
+  // Not only the tets the cut splits: a tet with a face on the cut (a cut along a node layer) has
+  // no volume above the cut, yet the tet below the cut carries the jump across that face.
   if (!cut || em.plain(t)) return;
   const CrackFront& front = em.cuts.empty() ? em.front : em.cuts[static_cast<std::size_t>(k)].front;
   TetCorners p;
