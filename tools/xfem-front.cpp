@@ -15,6 +15,7 @@
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/fracture/stress_intensity.h"
 #include "xfem/post/solution_provenance_check.h"
+#include "xfem/solve/contact_pressure_file.h"
 
 namespace {
 
@@ -52,13 +53,13 @@ int main(int argc, char** argv) {
       "front, by the interaction integral in its 3D domain form (auxiliary Williams fields in the local\n"
       "front frame, round the front's osculating circle with the curvature terms of a curved front;\n"
       "weight q = radial ramp x tangential hat, interpolated from the nodes; with cut_loads on the\n"
-      "evaluated cut, the crack-face term of the loaded faces). Plane strain\n"
+      "evaluated cut or --contact-pressure, the crack-face term of the loaded faces). Plane strain\n"
       "at interior front points; points at an end of the front (on the body's surface) are marked.\n"
       "Writes the front as a polyline with point arrays K_I, K_II, K_III, G (SI units) and/or a CSV\n"
       "(docs/FORMATS.md \"front.vtp\", \"front.csv\").",
       "xfem-front enriched.vtu --cut cut.vtp --solution u.mtx --problem problem.json \\\n"
       "      -o front.vtp --csv front.csv --png front.png --radius 0.01");
-  std::string input, solution, problem_path, output, csv, png, title;
+  std::string input, solution, problem_path, output, csv, png, title, contact_path;
   std::vector<std::string> cut_paths;
   int front_of = 0;
   xfem::FrontSifOptions options;
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
   app.add_option("-s,--solution", solution, "xfem-solve output: Matrix Market vector of 3N values")->required();
   app.add_option("-p,--problem", problem_path, "problem.json (material E, nu, or each region's (materials): a "
                                                "front point's domain must lie in one; body force; cut_loads)")->required();
+  app.add_option("--contact-pressure", contact_path, "xfem-solve --contact-pressure's file (the same solve): the contact "
+                                                    "pressure on the evaluated cut's faces, a face load in K's crack-face term");
   app.add_option("-o,--output", output, "front polyline with K_I, K_II, K_III, G (.vtp)");
   app.add_option("--csv", csv, "front as CSV: chain, arc_length, x, y, z, K_I, K_II, K_III, G, end");
   app.add_option("--png", png, "plot K along the front (gnuplot)");
@@ -111,9 +114,17 @@ int main(int argc, char** argv) {
     // Loads on the evaluated cut's faces: the interaction integral's crack-face term.
     for (const xfem::CutLoad& load : problem.cut_loads)
       if (load.cut == front_of) options.face_pressure += load.pressure, options.face_traction += load.traction;
-    if (problem.contact.applies_to(front_of))
-      xfem::cli::warn(problem_path + ": contact is on for cut " + std::to_string(front_of) + ": K leaves out the "
-                      "contact pressure on its faces (right where they are open, not where they touch)");
+    xfem::FaceContactPressure contact;
+    if (!contact_path.empty()) {
+      if (!problem.contact.applies_to(front_of))
+        throw xfem::Error(problem_path + ": contact is off for cut " + std::to_string(front_of) + ", yet --contact-pressure is given");
+      contact = xfem::face_contact_pressure(xfem::read_contact_pressure(contact_path, em.mesh.points.rows(), xfem::cut_count(em)),
+                                            front_of, contact_path);
+      options.contact_pressure = &contact;
+    } else if (problem.contact.applies_to(front_of)) {
+      xfem::cli::warn(problem_path + ": contact is on for cut " + std::to_string(front_of) + ": K leaves out the contact "
+                      "pressure on its faces (right where they are open, not where they touch): give --contact-pressure");
+    }
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");
     const Eigen::VectorXd u = xfem::read_vector(solution);

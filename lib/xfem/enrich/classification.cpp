@@ -456,11 +456,19 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
       // front only touches (all its nodes branch enriched) counts as separated only with volume
       // on both sides: ahead of a front lying on its face, H jumps across the cut's extension,
       // which is no cut.
-      bool opposite = false;
-      for (int k = 0; k < 4; ++k)
-        opposite = opposite || (c.side[mesh.tets(t, k)] > 0 ? below[t] : above[t]) > 0;
+      // But a node lying on the cut behind the front (on the cut, not one of the corners the front
+      // touches) has its sign function below it in this tet too: a crack lying in a node layer
+      // whose front runs along the tet's edge or vertex. Left uncut, the tet would not carry that
+      // node's sign DOF, and its sign function would jump across the tet's faces inside the body.
+      bool opposite = false, opposite_behind_front = false;
+      for (int k = 0; k < 4; ++k) {
+        const long m = mesh.tets(t, k);
+        const bool o = (c.side[m] > 0 ? below[t] : above[t]) > 0;
+        opposite = opposite || o;
+        opposite_behind_front = opposite_behind_front || (o && c.on_cut[m] && !(corners[t] & (1u << k)));
+      }
       const bool both = above[t] > 0 && below[t] > 0;
-      if (contact[t] == 1 ? both : opposite) c.cut_class[t] = CutClass::Complete;
+      if (contact[t] == 1 ? both || opposite_behind_front : opposite) c.cut_class[t] = CutClass::Complete;
     }
     tested_tets += tested;
   });

@@ -263,7 +263,10 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
 
   // Loaded faces: the crack-face term's points, once (stress_intensity.h), in the tets with a node
   // within R of the front (elsewhere q = 0 for every front point).
-  const bool loaded = options.face_pressure != 0.0 || options.face_traction.norm() > 0.0;
+  bool pressed = false;  // a contact pressure somewhere on the faces
+  if (options.contact_pressure)
+    for (double p : options.contact_pressure->pressure) pressed = pressed || p != 0.0;
+  const bool loaded = options.face_pressure != 0.0 || options.face_traction.norm() > 0.0 || pressed;
   if (loaded && options.face_order < 1) throw Error("face_order must be at least 1");
   std::vector<CrackFacePoint> face_points;
   if (loaded) {
@@ -466,7 +469,8 @@ std::vector<FrontSif> front_stress_intensity(const EnrichedMesh& em, const Displ
       if (!aux_at(fp.x, 1, ax[0], cx, kh, F[0], face_xa) || !aux_at(fp.x, -1, ax[1], cx, kh, F[1], face_xa)) continue;
       Eigen::Matrix3d Rx;
       Rx << ax[0], nrm, cx;
-      const Eigen::Vector3d load = options.face_pressure * fp.normal + options.face_traction;
+      const double contact = pressed ? face_contact_pressure_at(*options.contact_pressure, mesh, fp.tet, fp.x) : 0.0;
+      const Eigen::Vector3d load = (options.face_pressure + contact) * fp.normal + options.face_traction;
       for (int m = 0; m < 3; ++m) {
         const Eigen::Vector3d jump = tangent ? Eigen::Vector3d(C[m] * (F[0].dF - F[1].dF) * ax[0])
                                              : Eigen::Vector3d(Rx * C[m] * (F[0].dF - F[1].dF) * ax[0]);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "xfem/enrich/enriched_mesh.h"
+#include "xfem/fracture/face_contact_pressure.h"
 #include "xfem/integrate/tet_materials.h"
 
 namespace xfem {
@@ -96,6 +97,11 @@ struct FrontSifOptions {
   /// per direction; both zero: no term, the results of an unloaded cut unchanged bit for bit.
   double face_pressure = 0.0;                                 ///< Pa, > 0 pushes the faces apart
   Eigen::Vector3d face_traction = Eigen::Vector3d::Zero();    ///< Pa, on the face above
+  /// The contact pressure xfem-solve computed on the evaluated cut (xfem-front --contact-pressure),
+  /// or null: a face load like face_pressure (it pushes the faces apart), p(x) interpolated at each
+  /// face point with the weighted gap's shares (face_contact_pressure_at), added to face_pressure
+  /// in the same crack-face term. Null or zero everywhere: no term from it.
+  const FaceContactPressure* contact_pressure = nullptr;
   int face_order = 6;                                         ///< Gauss points per direction of the face rule
 };
 

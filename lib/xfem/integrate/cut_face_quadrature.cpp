@@ -45,6 +45,104 @@ void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eig
     }
 }
 
+// The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
+// The same test as consistent_gradients.cpp's (face_integrals splits a face along it).
+bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                      double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
+  const TriangleMesh& cm = cut.mesh();
+  std::array<Eigen::Vector3d, 3> v;
+  std::array<double, 3> d;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = cm.points.row(cm.triangles(f, k)).transpose();
+    d[k] = normal.dot(v[k] - point);
+    if (std::abs(d[k]) <= tolerance) d[k] = 0;
+  }
+  std::vector<Eigen::Vector3d> ends;
+  for (int k = 0; k < 3; ++k) {
+    const int l = (k + 1) % 3;
+    if (d[k] == 0) ends.push_back(v[k]);
+    if ((d[k] > 0 && d[l] < 0) || (d[k] < 0 && d[l] > 0)) ends.push_back(v[k] + d[k] / (d[k] - d[l]) * (v[l] - v[k]));
+  }
+  if (ends.size() != 2) return false;  // missing the plane, touching it at a corner, or lying in it
+  p = ends[0];
+  q = ends[1];
+  return true;
+}
+
+// The points of the parts of tet face (A, B, C) (its corners in increasing node id order, `normal`
+// its unit normal) that lie on the cut, made exactly as branch_gradient_integrals makes its face
+// points (consistent_gradients.cpp, face_integrals): the face split along the trace of every cut
+// triangle of `meeting` crossing a part's inside, then along a front lying in its plane, each part
+// fanned from polygon_fan_apex over the fronts near the face. With the same points, the jump of
+// N_l F_j that the stiffness's consistent shift integrates over the face and the one a load or a
+// contact pressure integrates agree to round-off; another rule of the same polygon (the cut
+// triangle clipped to the tet) differs by the rules' error of sqrt(r) next to a front on the
+// polygon's edge (measured: 1.7e-5 of max |u| on the crack lying in a node layer of
+// e2e.contact_closed). Appends (x, w, cut triangle) of every point.
+void face_points_on_cut(const CutSurface& cut, const std::vector<const FrontSegment*>& fronts,
+                        const std::vector<int>& meeting, const Eigen::Vector3d& A, const Eigen::Vector3d& B,
+                        const Eigen::Vector3d& C, const Eigen::Vector3d& normal, int depth,
+                        const std::vector<double>& nodes, const std::vector<double>& weights,
+                        std::vector<Eigen::Vector3d>& x, std::vector<double>& w, std::vector<int>& triangle) {
+  const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+  const double face_tolerance = 1e-12 * face_h;
+  std::vector<Polygon> parts{{A, B, C}}, next;
+  Polygon above, below;
+  for (const int tri : meeting) {
+    Eigen::Vector3d p, q;
+    if (!crossing_segment(cut, tri, A, normal, face_tolerance, p, q)) continue;
+    const Eigen::Vector3d cut_normal = cut.unit_normal(tri);
+    const Eigen::Vector3d cut_point = cut.mesh().points.row(cut.mesh().triangles(tri, 0)).transpose();
+    next.clear();
+    for (const Polygon& part : parts) {
+      split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
+      if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
+        next.push_back(above);
+        next.push_back(below);
+      } else {
+        next.push_back(part);
+      }
+    }
+    parts.swap(next);
+  }
+  std::vector<const FrontSegment*> face_fronts;
+  const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
+  for (const FrontSegment* segment : fronts)
+    if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
+        (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
+      face_fronts.push_back(segment);
+  for (const FrontSegment* segment : face_fronts) {
+    if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
+    const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
+    next.clear();
+    for (const Polygon& part : parts) {
+      split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
+      if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
+        next.push_back(above);
+        next.push_back(below);
+      } else {
+        next.push_back(part);
+      }
+    }
+    parts.swap(next);
+  }
+  std::vector<Eigen::Vector3d> px;
+  std::vector<double> pw;
+  for (const Polygon& part : parts) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& v : part) centre += v;
+    centre /= static_cast<double>(part.size());
+    const CutSurface::Closest near = cut.closest(centre);
+    if (near.distance > face_tolerance) continue;  // off the cut (beyond its front): no face there
+    polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, px, pw);
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      x.push_back(px[i]);
+      w.push_back(pw[i]);
+      triangle.push_back(near.triangle);
+    }
+  }
+}
+
 }  // namespace
 
 int corner_off_face_holding(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
@@ -126,8 +224,8 @@ std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std:
 
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out) {
   const CutSurface* cut = surface_of(em, k);
-  // Not only the tets the cut splits: a tet with a face on the cut (a cut along a node layer) is
-  // not split (cut_class 0), yet the tet below the cut carries the jump across that face.
+  // Not only the tets the cut splits: a tet with a face on the cut (a cut along a node layer) has
+  // no volume above the cut, yet the tet below the cut carries the jump across that face.
   if (!cut || em.plain(t)) return;
   const CrackFront& front = em.cuts.empty() ? em.front : em.cuts[static_cast<std::size_t>(k)].front;
   TetCorners p;
@@ -147,7 +245,23 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
   std::vector<Eigen::Vector3d> x;
   std::vector<double> w;
   const TriangleMesh& surface = cut->mesh();
-  for (int tri : cut->triangles_meeting(p)) {
+  const std::vector<int> meeting = cut->triangles_meeting(p);
+  std::vector<int> triangle;
+  bool face_done[4] = {false, false, false, false};
+  auto emit = [&](int tri) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (!(w[i] > 0)) continue;
+      CutFacePoint q;
+      q.tet = t;
+      q.cut = k;
+      q.triangle = tri >= 0 ? tri : triangle[i];
+      q.x = x[i];
+      q.normal = cut->unit_normal(q.triangle);
+      q.weight = w[i];
+      out.push_back(q);
+    }
+  };
+  for (int tri : meeting) {
     const Polygon poly = clip_triangle(p, surface.points.row(surface.triangles(tri, 0)).transpose(),
                                        surface.points.row(surface.triangles(tri, 1)).transpose(),
                                        surface.points.row(surface.triangles(tri, 2)).transpose());
@@ -159,18 +273,26 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
     // below always sees both sides; counting it once there gives the face its whole area.
     const int off = corner_off_face_holding(p, poly, tolerance);
     if (off >= 0 && normal.dot(p[off] - poly[0]) > 0) continue;
-    polygon_gauss_rule(poly, polygon_fan_apex(poly, normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if (!(w[i] > 0)) continue;
-      CutFacePoint q;
-      q.tet = t;
-      q.cut = k;
-      q.triangle = tri;
-      q.x = x[i];
-      q.normal = normal;
-      q.weight = w[i];
-      out.push_back(q);
+    if (off >= 0) {
+      // The whole face at once, with the stiffness's own face points (face_points_on_cut), once
+      // however many cut triangles cover it.
+      if (face_done[off]) continue;
+      face_done[off] = true;
+      std::array<int, 3> f;
+      for (int c = 0, m = 0; c < 4; ++c)
+        if (c != off) f[m++] = c;
+      std::sort(f.begin(), f.end(), [&](int a, int b) { return em.mesh.tets(t, a) < em.mesh.tets(t, b); });
+      const Eigen::Vector3d face_normal = (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).normalized();
+      x.clear();
+      w.clear();
+      triangle.clear();
+      face_points_on_cut(*cut, fronts, meeting, p[f[0]], p[f[1]], p[f[2]], face_normal, depth, nodes, weights, x, w,
+                         triangle);
+      emit(-1);
+      continue;
     }
+    polygon_gauss_rule(poly, polygon_fan_apex(poly, normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+    emit(tri);
   }
 }
 

@@ -62,7 +62,12 @@ int corner_off_face_holding(const std::array<Eigen::Vector3d, 4>& p, const std::
 /// load) are exact; the branch part (sqrt r N_l) converges with the order. Nothing for a tet without
 /// enriched DOFs. A polygon lying in a face of the tet (a cut along mesh faces) counts once, in the
 /// tet below the cut: the nodes on the cut are above, so the tet above may carry no enriched DOF,
-/// and the one below, which the cut does not split (cut_class 0), carries the jump.
+/// and the one below, which has no volume above the cut, carries the jump. Such a face takes the
+/// points branch_gradient_integrals takes on it (the face split along a front lying in it, its
+/// parts on the cut fanned from their singular points), once however many cut triangles cover it:
+/// the stiffness's consistent shift and a load or contact pressure then integrate the jump of the
+/// branch functions there with the same points (a crack lying in a node layer behaves as no cut
+/// under contact to 1.8e-10 of max |u|, not 1.7e-5; docs/METHOD.md "Contact").
 void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vector<CutFacePoint>& out);
 
 /// Every point of cut k's faces, tet after tet in increasing order.
