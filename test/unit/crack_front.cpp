@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "xfem/core/error.h"
 
@@ -97,4 +99,73 @@ TEST_CASE("crack_front: segments join into chains, open and closed, whatever the
   CHECK_THAT(chains[1].arc_offset(3.5, 0.5), Catch::WithinAbs(1.0, 1e-14));
   CHECK_THAT(chains[0].arc_offset(2.5, 0.5), Catch::WithinAbs(-2.0, 1e-14));
   CHECK_THROWS_WITH(xfem::front_polylines(xfem::CrackFront()), Catch::Contains("no segments"));
+}
+
+TEST_CASE("crack_front: coordinates and distances from the segments near a tet equal the whole front's, bit for bit",
+          "[crack_front]") {
+  // A wavy open chain of 300 short segments and a closed loop of 60 beside it (two chains).
+  std::vector<xfem::FrontSegment> segments;
+  const auto wave = [](int k) {
+    const double s = 0.001 * k;
+    return Eigen::Vector3d(s - 0.15, 0.02 * std::sin(40 * s), 0.01 * std::cos(25 * s));
+  };
+  for (int k = 0; k < 300; ++k) {
+    const Eigen::Vector3d n = Eigen::Vector3d(0, -std::sin(0.02 * k), std::cos(0.02 * k));
+    segments.push_back({wave(k), wave(k + 1), n});
+  }
+  const double pi = std::acos(-1.0);
+  const auto loop = [&](int k) {
+    const double a = 2 * pi * k / 60;
+    return Eigen::Vector3d(0.05 * std::cos(a), 0.08, 0.05 * std::sin(a));
+  };
+  for (int k = 0; k < 60; ++k) segments.push_back({loop(k), loop(k + 1), Eigen::Vector3d(0, 1, 0)});
+  const xfem::CrackFront front(segments);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  std::size_t listed = 0, tets = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    // Tets of 2 to 40 mm near both chains, some across them.
+    const double size = trial % 2 ? 0.002 : 0.04;
+    const Eigen::Vector3d at = trial % 4 < 2 ? Eigen::Vector3d(0.15 * u(rng), 0.04 + 0.06 * u(rng), 0.03 * u(rng))
+                                             : Eigen::Vector3d(wave(static_cast<int>(150 + 140 * u(rng))) + 0.003 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    Eigen::Vector3d corners[4];
+    for (auto& c : corners) c = at + size * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    const xfem::CrackFront::Near near = front.near(corners, 4);
+    if (size < 0.01 && front.distance(at) < 0.004) listed += near.chain_segments.size(), ++tets;
+    std::vector<Eigen::Vector3d> points;
+    for (int p = 0; p < 30; ++p) {
+      double l[4], sum = 0;
+      for (double& v : l) sum += (v = -std::log(unit(rng) + 1e-300));
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      for (int c = 0; c < 4; ++c) x += l[c] / sum * corners[c];
+      if (p == 0) x = corners[trial % 4];  // a corner itself
+      points.push_back(x);
+      const xfem::TipCoordinates a = front.coordinates(x), b = front.coordinates(x, near);
+      REQUIRE(a.xa == b.xa);
+      REQUIRE(a.xb == b.xb);
+      REQUIRE(a.grad == b.grad);
+      // The distances the rules ask for, from the list and from the tree.
+      REQUIRE(front.distance(x, near) == front.distance(x));
+      REQUIRE(front.distance(x, corners[p % 4], near) == front.distance(x, corners[p % 4]));
+    }
+    // Many points at once (runs of consecutive points, each with its own list), the points of this
+    // tet and one far away among them.
+    points.insert(points.begin() + 12, at + Eigen::Vector3d(0.3, 0, 0));
+    std::vector<xfem::TipCoordinates> many(points.size());
+    front.coordinates(points.data(), static_cast<int>(points.size()), many.data());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const xfem::TipCoordinates one = front.coordinates(points[i]);
+      REQUIRE(many[i].xa == one.xa);
+      REQUIRE(many[i].xb == one.xb);
+      REQUIRE(many[i].grad == one.grad);
+    }
+    // Far outside the region the list is not used: the whole front's answer still.
+    const Eigen::Vector3d away = at + Eigen::Vector3d(0.3, 0, 0);
+    REQUIRE(front.coordinates(away, near).xa == front.coordinates(away).xa);
+  }
+  // The point of the lists: a few segments per small tet near the front (2 mm, segments of 1 mm),
+  // not the front's 360.
+  REQUIRE(tets > 5);
+  CHECK(static_cast<double>(listed) / tets < 30);
+  CHECK(xfem::CrackFront().near(nullptr, 0).chain_segments.empty());
 }

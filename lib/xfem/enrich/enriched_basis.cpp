@@ -103,14 +103,9 @@ void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, co
   }
 }
 
-}  // namespace
-
-void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
-                    BasisAt& out) {
-  if (!em.cuts.empty()) {  // several cuts: side is a side code (side_codes.h)
-    several_cuts_basis(em, t, shape, x, side, out);
-    return;
-  }
+// enriched_basis of a mesh with one cut; `tip`: x's crack-tip coordinates if the caller has them.
+void one_cut_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                   const TipCoordinates* tip, BasisAt& out) {
   const long begin = em.offsets[t];
   const int n = em.size(t);
   out.N.resize(n);
@@ -140,7 +135,7 @@ void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const 
           throw Error("tet " + std::to_string(t) + ": branch DOF " + std::to_string(dof) + " but the cut has no front");
         // Continuous crack-tip coordinates (crack_front.h); behind the front the point's side
         // decides the face (theta = +-pi on the cut), from the cut surface when not given.
-        const TipCoordinates tc = em.front.coordinates(x);
+        const TipCoordinates tc = tip ? *tip : em.front.coordinates(x);
         int branch_side = side;
         if (branch_side == 0 && tc.xa < 0 && em.cut) branch_side = h != 0 ? h : (h = em.cut->side(x));
         F = branch_functions(tc, branch_side);
@@ -151,6 +146,26 @@ void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const 
       out.dN.row(k) = F.F[j] * shape.grad.row(l) + N[l] * F.dF.row(j);
     }
   }
+}
+
+}  // namespace
+
+void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                    BasisAt& out) {
+  if (!em.cuts.empty()) {  // several cuts: side is a side code (side_codes.h)
+    several_cuts_basis(em, t, shape, x, side, out);
+    return;
+  }
+  one_cut_basis(em, t, shape, x, side, nullptr, out);
+}
+
+void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                    const TipCoordinates& tip, BasisAt& out) {
+  if (!em.cuts.empty()) {
+    several_cuts_basis(em, t, shape, x, side, out);
+    return;
+  }
+  one_cut_basis(em, t, shape, x, side, &tip, out);
 }
 
 void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side, BasisAt& out) {

@@ -33,6 +33,12 @@ void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     BasisAt& out);
 
+/// The same with x's crack-tip coordinates `tip` computed by the caller (what em.front.coordinates(x)
+/// gives, e.g. by CrackFront::coordinates(x, near) with the front's segments near the tet found once
+/// for all its points). Used for one cut only: with several cuts (em.cuts) `tip` is ignored.
+void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
+                    const TipCoordinates& tip, BasisAt& out);
+
 /// u_h(x) = sum over C of U_k Phi_k(x) in tet t, for the solution u (3N scalars, 3k + i).
 Eigen::Vector3d displacement_at(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int side,
                                 const Eigen::VectorXd& u);

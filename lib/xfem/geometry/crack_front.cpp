@@ -72,6 +72,28 @@ double CrackFront::distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) 
 }
 
 namespace {
+bool in_ball(const CrackFront::Near& near, const Eigen::Vector3d& x) {
+  return near.radius >= 0 && (x - near.centre).norm() <= near.radius;
+}
+}  // namespace
+
+double CrackFront::distance(const Eigen::Vector3d& x, const Near& near) const {
+  if (!index_ || !in_ball(near, x)) return distance(x);
+  // The minimum of the same distances over a list holding the nearest segment: the same number.
+  double best = std::numeric_limits<double>::infinity();
+  for (const int k : near.segments) best = std::min(best, point_segment_distance(x, segments_[k].p0, segments_[k].p1));
+  return best;
+}
+
+double CrackFront::distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Near& near) const {
+  if (!index_ || !in_ball(near, p) || !in_ball(near, q)) return distance(p, q);
+  double best = std::numeric_limits<double>::infinity();
+  for (const int k : near.segments)
+    best = std::min(best, segment_segment_distance(p, q, segments_[k].p0, segments_[k].p1));
+  return best;
+}
+
+namespace {
 
 void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
@@ -113,70 +135,11 @@ double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& 
   return f;
 }
 
-}  // namespace
-
-TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
-  if (segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
-  // The foot of x on the front: the s whose normal plane (normal to the tangent interpolated
-  // along the front) contains x, the nearest such if several. Unlike the closest point of the
-  // polyline, which jumps between the two segments of a corner for the points on its concave
-  // side, the normal planes turn continuously with s, so s(x) is continuous (up to the front's
-  // radius of curvature). Beyond the ends of an open chain the end point is the foot.
-  // Pass 1: the closest point of the front, the foot when no normal plane holds x (beyond an open
-  // chain's end). Squared distances, no square roots in the scans: this runs for every
-  // integration point of a branch-enriched tet.
-  // Both passes visit only the segments the front's segment tree finds near x, in the order of a
-  // scan over every chain's segments (the same answer as that scan, bit for bit).
-  const Index& index = *index_;
-  const auto segment_distance2 = [&](int k, double& t, double& len2) {
-    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
-    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
-    const Eigen::Vector3d& p0 = ch.points[i];
-    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
-    len2 = d.squaredNorm();
-    t = len2 > 0 ? std::clamp((x - p0).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (p0 + t * d - x).squaredNorm();
-  };
-  // The search is bounded from the start by the segment tree's quick upper bound: it then skips at
-  // once what lies farther. The bound only prunes; the choice is the scan's.
-  double bound2 = index.by_chain.nearest_bound2(x);
-  double best2 = std::numeric_limits<double>::infinity();
-  const FrontPolyline* best = nullptr;
-  double s = 0;
-  int seg = 0;
-  bool inside = false;
-  index.by_chain.visit_near(x, bound2, [&](int k) {
-    double t, len2;
-    const double d2 = segment_distance2(k, t, len2);
-    if (d2 < best2) {
-      best = &(*chains_)[index.chain_of[k]];
-      best2 = d2, s = best->arc[index.segment_of[k]] + t * std::sqrt(len2), seg = index.segment_of[k];
-      bound2 = std::min(bound2, d2);
-    }
-  });
-  // Pass 2: the feet in normal planes, on the segments near enough to hold one.
-  const double d0 = std::sqrt(best2);
-  double best_root = std::numeric_limits<double>::infinity();
-  double reach2 = 1.5 * d0 + 1e-12 * index.longest;
-  reach2 *= reach2;
-  index.by_chain.visit_near(x, reach2, [&](int k) {
-    double t, len2;
-    const double d2 = segment_distance2(k, t, len2);
-    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
-    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
-    const Eigen::Vector3d& p0 = ch.points[i];
-    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
-    const double len = d.norm(), reach = 1.5 * d0 + 1e-12 * len;
-    if (d2 > reach * reach) return;  // too far to hold the foot
-    const double f = normal_plane_root(ch, i, x);
-    if (f < 0) return;
-    const double root = ch.arc[i] + f * len, dist = (x - (p0 + f * d)).norm();
-    if (dist < best_root) {
-      best_root = dist, best = &ch, s = root, seg = i;
-      inside = ch.closed || (root > 0 && root < ch.length);
-    }
-  });
-  const FrontPolyline& ch = *best;
+// The crack-tip coordinates of x and their gradients given its foot: arc length s on segment seg
+// of chain ch, `inside` whether the foot moves with x (a normal-plane foot strictly inside the
+// chain).
+TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double s, bool inside,
+                                       const Eigen::Vector3d& x) {
   const int np = static_cast<int>(ch.points.size());
   const Eigen::Vector3d d = ch.points[(seg + 1) % np] - ch.points[seg];
   const double len = d.norm();
@@ -205,6 +168,207 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
     out.grad.row(1) += (db.dot(v) - b.dot(u)) * grad_s.transpose();
   }
   return out;
+}
+
+}  // namespace
+
+TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x) const {
+  if (segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  const SegmentTree& tree = index_->by_chain;
+  return coordinates_visiting(
+      x, [&](double& bound2, auto&& f) { bound2 = tree.nearest_bound2(x), tree.visit_near(x, bound2, f); },
+      [&](double& reach2, auto&& f) { tree.visit_near(x, reach2, f); });
+}
+
+TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x, const Near& near) const {
+  if (segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  // Outside the region the list was made for it may miss the nearest segment: the tree then.
+  if (!in_ball(near, x)) return coordinates(x);
+  const auto scan = [&](double&, auto&& f) {
+    for (const int k : near.chain_segments) f(k);
+  };
+  return coordinates_visiting(x, scan, scan);
+}
+
+void CrackFront::coordinates(const Eigen::Vector3d* x, int count, TipCoordinates* out) const {
+  if (count > 0 && segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
+  // Runs of 8 points: a list per run costs about two tree searches, the scans of a run's points over
+  // it less than their own searches (measured in docs/PERFORMANCE.md, issue 35).
+  constexpr int kRun = 8;
+  // A run's segments unpacked once: the scans below repeat coordinates_visiting's arithmetic,
+  // operation for operation (the same bits; test/unit/crack_front.cpp compares them).
+  struct Candidate {
+    const FrontPolyline* chain;
+    int segment;
+    Eigen::Vector3d p0, d;
+    double len2, len;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<double> d2s;
+  for (int begin = 0; begin < count; begin += kRun) {
+    const int end = std::min(count, begin + kRun);
+    const Near near = this->near(x + begin, end - begin, NearFor::coordinates);
+    candidates.clear();
+    for (const int k : near.chain_segments) {
+      const FrontPolyline& ch = (*chains_)[index_->chain_of[k]];
+      const int i = index_->segment_of[k], np = static_cast<int>(ch.points.size());
+      const Eigen::Vector3d d = ch.points[(i + 1) % np] - ch.points[i];
+      candidates.push_back({&ch, i, ch.points[i], d, d.squaredNorm(), d.norm()});
+    }
+    d2s.resize(candidates.size());
+    for (int p = begin; p < end; ++p) {
+      const Eigen::Vector3d& y = x[p];
+      if (!in_ball(near, y)) {
+        out[p] = coordinates(y);
+        continue;
+      }
+      // Pass 1: the closest point of the front (coordinates_visiting).
+      double best2 = std::numeric_limits<double>::infinity(), s = 0;
+      const FrontPolyline* best = nullptr;
+      int seg = 0;
+      bool inside = false;
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const Candidate& g = candidates[c];
+        const double t = g.len2 > 0 ? std::clamp((y - g.p0).dot(g.d) / g.len2, 0.0, 1.0) : 0.0;
+        const double d2 = d2s[c] = (g.p0 + t * g.d - y).squaredNorm();
+        if (d2 < best2) best = g.chain, best2 = d2, s = g.chain->arc[g.segment] + t * std::sqrt(g.len2), seg = g.segment;
+      }
+      // Pass 2: the feet in normal planes.
+      const double d0 = std::sqrt(best2);
+      double best_root = std::numeric_limits<double>::infinity();
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const Candidate& g = candidates[c];
+        const double reach = 1.5 * d0 + 1e-12 * g.len;
+        if (d2s[c] > reach * reach) continue;
+        const double f = normal_plane_root(*g.chain, g.segment, y);
+        if (f < 0) continue;
+        const double root = g.chain->arc[g.segment] + f * g.len, dist = (y - (g.p0 + f * g.d)).norm();
+        if (dist < best_root) {
+          best_root = dist, best = g.chain, s = root, seg = g.segment;
+          inside = g.chain->closed || (root > 0 && root < g.chain->length);
+        }
+      }
+      out[p] = tip_coordinates_at_foot(*best, seg, s, inside, y);
+    }
+  }
+}
+
+CrackFront::Near CrackFront::near(const Eigen::Vector3d* points, int count, NearFor use) const {
+  Near out;
+  if (segments_.empty() || count <= 0) return out;
+  const Index& index = *index_;
+  Eigen::Vector3d lo = points[0], hi = points[0];
+  for (int i = 1; i < count; ++i) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
+  out.centre = 0.5 * (lo + hi);
+  double radius = 0;
+  for (int i = 0; i < count; ++i) radius = std::max(radius, (points[i] - out.centre).norm());
+  // A hair larger, so that the points themselves (and the Gauss points between them) fall inside.
+  out.radius = radius * (1 + 1e-12) + 1e-300;
+  // The distance from the centre to the nearest segment of a tree, each list from its own tree (the
+  // chains' vertices and the segments' ends agree only to the joining tolerance).
+  const auto nearest = [&](const SegmentTree& tree, auto&& distance) {
+    double bound2 = tree.nearest_bound2(out.centre), d = std::numeric_limits<double>::infinity();
+    tree.visit_near(out.centre, bound2, [&](int k) {
+      d = std::min(d, distance(k));
+      bound2 = std::min(bound2, d * d);
+    });
+    return d;
+  };
+  // U bounds the distance to the front of every point of the ball: for the segment nearest to the
+  // centre, |x - P| <= |x - centre| + d(centre). A point's nearest segment lies within U of it, its
+  // feet within 1.5 U (+ the 1e-12 slack of coordinates()): every segment that can serve a point
+  // of the ball lies within radius + 1.5 U + slack of the centre. Relative margins far above
+  // rounding: a longer list only costs time, a shorter one bits.
+  if (use != NearFor::distances) {
+    const auto chain_distance = [&](int k) {
+      const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
+      const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
+      return point_segment_distance(out.centre, ch.points[i], ch.points[(i + 1) % np]);
+    };
+    const double U = out.radius + nearest(index.by_chain, chain_distance);
+    const double reach = (out.radius + 1.5 * U + 1e-12 * index.longest) * (1 + 1e-9) + 1e-300;
+    double reach2 = reach * reach;
+    index.by_chain.visit_near(out.centre, reach2, [&](int k) {
+      if (chain_distance(k) <= reach) out.chain_segments.push_back(k);
+    });
+  }
+  // distance(): the nearest segment of a point of the ball (or of a segment in it) lies within U of
+  // the point, so within radius + U of the centre.
+  if (use != NearFor::coordinates) {
+    const auto segment_distance = [&](int k) {
+      return point_segment_distance(out.centre, segments_[k].p0, segments_[k].p1);
+    };
+    const double within = (2 * out.radius + nearest(index.by_segment, segment_distance)) * (1 + 1e-9) + 1e-300;
+    double within2 = within * within;
+    index.by_segment.visit_near(out.centre, within2, [&](int k) {
+      if (segment_distance(k) <= within) out.segments.push_back(k);
+    });
+  }
+  return out;
+}
+
+template <class Visit1, class Visit2>
+TipCoordinates CrackFront::coordinates_visiting(const Eigen::Vector3d& x, Visit1&& visit1, Visit2&& visit2) const {
+  // The foot of x on the front: the s whose normal plane (normal to the tangent interpolated
+  // along the front) contains x, the nearest such if several. Unlike the closest point of the
+  // polyline, which jumps between the two segments of a corner for the points on its concave
+  // side, the normal planes turn continuously with s, so s(x) is continuous (up to the front's
+  // radius of curvature). Beyond the ends of an open chain the end point is the foot.
+  // Pass 1: the closest point of the front, the foot when no normal plane holds x (beyond an open
+  // chain's end). Squared distances, no square roots in the scans: this runs for every
+  // integration point of a branch-enriched tet.
+  // Both passes visit only the segments the front's segment tree finds near x, in the order of a
+  // scan over every chain's segments (the same answer as that scan, bit for bit).
+  const Index& index = *index_;
+  const auto segment_distance2 = [&](int k, double& t, double& len2) {
+    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
+    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
+    const Eigen::Vector3d& p0 = ch.points[i];
+    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+    len2 = d.squaredNorm();
+    t = len2 > 0 ? std::clamp((x - p0).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (p0 + t * d - x).squaredNorm();
+  };
+  // The tree's search is bounded from the start by its quick upper bound: it then skips at once
+  // what lies farther. The bound only prunes; the choice is the scan's.
+  double bound2 = std::numeric_limits<double>::infinity();
+  double best2 = std::numeric_limits<double>::infinity();
+  const FrontPolyline* best = nullptr;
+  double s = 0;
+  int seg = 0;
+  bool inside = false;
+  visit1(bound2, [&](int k) {
+    double t, len2;
+    const double d2 = segment_distance2(k, t, len2);
+    if (d2 < best2) {
+      best = &(*chains_)[index.chain_of[k]];
+      best2 = d2, s = best->arc[index.segment_of[k]] + t * std::sqrt(len2), seg = index.segment_of[k];
+      bound2 = std::min(bound2, d2);
+    }
+  });
+  // Pass 2: the feet in normal planes, on the segments near enough to hold one.
+  const double d0 = std::sqrt(best2);
+  double best_root = std::numeric_limits<double>::infinity();
+  double reach2 = 1.5 * d0 + 1e-12 * index.longest;
+  reach2 *= reach2;
+  visit2(reach2, [&](int k) {
+    double t, len2;
+    const double d2 = segment_distance2(k, t, len2);
+    const FrontPolyline& ch = (*chains_)[index.chain_of[k]];
+    const int i = index.segment_of[k], np = static_cast<int>(ch.points.size());
+    const Eigen::Vector3d& p0 = ch.points[i];
+    const Eigen::Vector3d d = ch.points[(i + 1) % np] - p0;
+    const double len = d.norm(), reach = 1.5 * d0 + 1e-12 * len;
+    if (d2 > reach * reach) return;  // too far to hold the foot
+    const double f = normal_plane_root(ch, i, x);
+    if (f < 0) return;
+    const double root = ch.arc[i] + f * len, dist = (x - (p0 + f * d)).norm();
+    if (dist < best_root) {
+      best_root = dist, best = &ch, s = root, seg = i;
+      inside = ch.closed || (root > 0 && root < ch.length);
+    }
+  });
+  return tip_coordinates_at_foot(*best, seg, s, inside, x);
 }
 
 int CrackFront::closest_segment(const Eigen::Vector3d& x) const {

@@ -81,12 +81,36 @@ class CrackFront {
   /// where the closest segment changes. Continuous within the front's radius of curvature (the
   /// normal planes of a curved front meet beyond it). Throws xfem::Error if there are no segments.
   TipCoordinates coordinates(const Eigen::Vector3d& x) const;
+  /// The chain segments (indices in the chains' order) that coordinates() can take for any point of
+  /// a region: the nearest segment, or one near enough to hold the foot, of some point in it. The
+  /// region is the ball (centre, radius) around `points` (e.g. a tet's vertices), which holds their
+  /// convex hull. Found once per tet, it replaces the segment tree's two searches per point.
+  struct Near {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double radius = -1;             ///< metres; < 0: no region (coordinates(x, near) searches the tree)
+    std::vector<int> chain_segments;  ///< for coordinates(), increasing
+    std::vector<int> segments;        ///< for distance(): indices in segments(), increasing
+  };
+  /// What a Near list serves: coordinates(x, near), distance(..., near) or both.
+  enum class NearFor { coordinates, distances, both };
+  Near near(const Eigen::Vector3d* points, int count, NearFor use = NearFor::both) const;
+  /// coordinates(x[i]) for i < count into out[i], bit for bit: for integration rules, whose
+  /// consecutive points lie close together. Each run of a few consecutive points gets its own near()
+  /// list, found with the tree once, and its points scan that short list.
+  void coordinates(const Eigen::Vector3d* x, int count, TipCoordinates* out) const;
+  /// coordinates(x), bit for bit, scanning only near.chain_segments when x lies in near's ball (the
+  /// segment tree otherwise, as coordinates(x)).
+  TipCoordinates coordinates(const Eigen::Vector3d& x, const Near& near) const;
   /// The front's chains (front_polylines), built once.
   const std::vector<FrontPolyline>& chains() const { return *chains_; }
   /// Distance from x to the front (its nearest segment); +infinity for an empty front.
   double distance(const Eigen::Vector3d& x) const;
   /// Distance from the segment pq to the front; +infinity for an empty front.
   double distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const;
+  /// The same two, bit for bit, from near.segments when x (p and q) lie in near's ball: the
+  /// rules of a tet's pieces ask for these at every piece's vertices and edges.
+  double distance(const Eigen::Vector3d& x, const Near& near) const;
+  double distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Near& near) const;
 
  private:
   // Segment trees (segment_tree.h) over the segments in their order and in the chains' order,
@@ -96,6 +120,10 @@ class CrackFront {
     std::vector<int> chain_of, segment_of;  ///< per chain-order segment: its chain and index in it
     double longest = 0;                     ///< the longest chain segment, metres
   };
+  // coordinates() with the candidate segments of its two passes given by `visit1(x, bound2, f)` and
+  // `visit2(x, reach2, f)`, each calling f(k) in increasing chain index k.
+  template <class Visit1, class Visit2>
+  TipCoordinates coordinates_visiting(const Eigen::Vector3d& x, Visit1&& visit1, Visit2&& visit2) const;
   std::vector<FrontSegment> segments_;
   std::shared_ptr<const std::vector<FrontPolyline>> chains_;
   std::shared_ptr<const Index> index_;

@@ -156,8 +156,9 @@ namespace {
 // passes close to, but not through, the part the Gauss points resolve) is bisected at the midpoint
 // of the edge concerned, the halves keeping the vertices on the front, until the front is at least
 // as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
-void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
-                     int side, PointRule& out, int level) {
+// `near`: the front's segments near a region holding p (CrackFront::near), for its distances.
+void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const CrackFront::Near& near,
+                     const TetRuleLayout& layout, int side, PointRule& out, int level) {
   static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   auto opposite = [](int i, int j, int& k, int& l) {
     k = -1;
@@ -169,10 +170,10 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
     std::array<Eigen::Vector3d, 4> q = p;
     q[i] = mid;
-    append_tet_rule(q, front, layout, side, out, level + 1);
+    append_tet_rule(q, front, near, layout, side, out, level + 1);
     q = p;
     q[j] = mid;
-    append_tet_rule(q, front, layout, side, out, level + 1);
+    append_tet_rule(q, front, near, layout, side, out, level + 1);
   };
   const bool may_split = level < layout.near_levels;
   int best = 0, n = layout.far;
@@ -181,7 +182,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     for (const auto& e : kEdges) longest = std::max(longest, (p[e[0]] - p[e[1]]).norm());
     int on[4], count = 0;
     for (int m = 0; m < 4; ++m)
-      if (front.distance(p[m]) <= kOnFront * longest) on[count++] = m;
+      if (front.distance(p[m], near) <= kOnFront * longest) on[count++] = m;
     if (count == 1) {
       // Singular at vertex a; nearly singular in the direction of the face opposite it when the
       // front line passes close to that face: split the face's longest edge.
@@ -193,7 +194,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         int e0 = 0, e1 = 1;
         for (int x = 0; x < 3; ++x) {
           const int u = face[x], v = face[(x + 1) % 3];
-          h = std::min(h, front.distance(p[u], p[v]));
+          h = std::min(h, front.distance(p[u], p[v], near));
           if ((p[u] - p[v]).norm() > edge) {
             edge = (p[u] - p[v]).norm();
             e0 = u;
@@ -208,13 +209,13 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     if (count >= 2) {
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
-      if (may_split && front.distance(p[k], p[l]) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
+      if (may_split && front.distance(p[k], p[l], near) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
       append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], layout.radial, layout.along, layout.across, side, out);
       return;
     }
     double nearest = std::numeric_limits<double>::infinity();
     for (int e = 0; e < 6; ++e) {
-      const double dist = front.distance(p[kEdges[e][0]], p[kEdges[e][1]]);
+      const double dist = front.distance(p[kEdges[e][0]], p[kEdges[e][1]], near);
       if (dist < nearest) {
         nearest = dist;
         best = e;
@@ -236,12 +237,12 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
 
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, int n, int side,
                      PointRule& out) {
-  append_tet_rule(p, front, TetRuleLayout::of_order(n), side, out, 0);
+  append_tet_rule(p, front, TetRuleLayout::of_order(n), side, out);
 }
 
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const TetRuleLayout& layout,
                      int side, PointRule& out) {
-  append_tet_rule(p, front, layout, side, out, 0);
+  append_tet_rule(p, front, front.near(p.data(), 4, CrackFront::NearFor::distances), layout, side, out, 0);
 }
 
 void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int t, int n, PointRule& out) {
@@ -252,10 +253,11 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
                      PointRule& out) {
   out.clear();
   const int i = splits.index.empty() ? -1 : splits.index[t];
+  std::array<Eigen::Vector3d, 4> p;
+  for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+  const CrackFront& front = front_of_tet(em, t);
   if (i < 0) {
-    std::array<Eigen::Vector3d, 4> p;
-    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    append_tet_rule(p, front_of_tet(em, t), layout, 0, out);
+    append_tet_rule(p, front, front.near(p.data(), 4, CrackFront::NearFor::distances), layout, 0, out, 0);
     return;
   }
   // The sign enrichment is constant on each piece and the shape functions linear: one point per
@@ -264,7 +266,8 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
     const auto& q = splits.tets[s];
     if (branch) {
-      append_tet_rule(q, front_of_tet(em, t), layout, splits.side[s], out);
+      // The front segments near the piece, found once for the distances that lay out its rule.
+      append_tet_rule(q, front, front.near(q.data(), 4, CrackFront::NearFor::distances), layout, splits.side[s], out, 0);
     } else {
       out.x.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
       out.weights.push_back(std::abs(signed_volume(q[0], q[1], q[2], q[3])));
@@ -279,14 +282,25 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   const int n = em.size(t), q = rule.size();
   gradients.resize(q, 3 * n);
   BasisAt b;
+  const bool branch = em.branch(t);
+  // The crack-tip coordinates of a branch tet's points together (CrackFront::coordinates of many
+  // points): the same bits as a search of the whole front per point.
+  const bool near_front = branch && em.cuts.empty() && !em.front.empty() && q > 0;
+  std::vector<TipCoordinates> tips;
+  if (near_front) {
+    tips.resize(q);
+    em.front.coordinates(rule.x.data(), q, tips.data());
+  }
   for (int p = 0; p < q; ++p) {
-    enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
+    if (near_front)
+      enriched_basis(em, t, shape, rule.x[p], rule.side[p], tips[p], b);
+    else
+      enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
     for (int c = 0; c < n; ++c)
       for (int a = 0; a < 3; ++a) gradients(p, 3 * c + a) = b.dN(c, a);
   }
   // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
-  const bool branch = em.branch(t);
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
     const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache);

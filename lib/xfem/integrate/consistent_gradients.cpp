@@ -110,6 +110,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
   integral[1].setZero();
   std::vector<Eigen::Vector3d> x;
   std::vector<double> w;
+  std::vector<TipCoordinates> tips;
   for (const Polygon& part : parts) {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (const auto& v : part) centre += v;
@@ -127,10 +128,13 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
       }
     }
     polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
+    // The crack-tip coordinates of the part's points together (the same bits as one by one).
+    tips.resize(x.size());
+    front.coordinates(x.data(), static_cast<int>(x.size()), tips.data());
     for (std::size_t i = 0; i < x.size(); ++i) {
       const Eigen::Vector2d bc = JtJ.solve(J.transpose() * (x[i] - A));
       const Eigen::Vector3d N(1.0 - bc[0] - bc[1], bc[0], bc[1]);
-      const TipCoordinates tc = front.coordinates(x[i]);
+      const TipCoordinates& tc = tips[i];
       const BranchValues F0 = branch_functions(tc, side[0]);
       const BranchValues F1 = side[1] == side[0] ? F0 : branch_functions(tc, side[1]);
       for (int j = 0; j < 4; ++j) {
@@ -222,6 +226,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
   if (cut) {
     const TetShape shape = tet_shape(em.mesh, t);
     const TriangleMesh& cm = cut->mesh();
+    std::vector<TipCoordinates> tips;
     for (const int tri : meeting) {
       const Polygon poly = clip_triangle(corner, cm.points.row(cm.triangles(tri, 0)).transpose(),
                                          cm.points.row(cm.triangles(tri, 1)).transpose(),
@@ -239,8 +244,10 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
       if (on_face) continue;
       const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
       polygon_gauss_rule(poly, polygon_fan_apex(poly, cut_normal, fronts, tolerance), depth, fronts, nodes, weights, x, w);
+      tips.resize(x.size());
+      front.coordinates(x.data(), static_cast<int>(x.size()), tips.data());
       for (std::size_t i = 0; i < x.size(); ++i) {
-        const TipCoordinates tc = front.coordinates(x[i]);
+        const TipCoordinates& tc = tips[i];
         const BranchValues below = branch_functions(tc, -1), above = branch_functions(tc, 1);
         const Eigen::Vector4d N = shape.values(x[i]);
         for (const Entry& e : entries)
