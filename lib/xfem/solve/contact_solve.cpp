@@ -50,8 +50,13 @@ double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen:
       value -= c.weight[i] * h[i] * std::max(0.0, lambda[i] - c.penalty[i] * (g[i] + alpha * h[i]));
     return value;
   };
+  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature));
+}
+
+}  // namespace
+
+double convex_step_length(const std::function<double(double)>& derivative, double size) {
   // Round-off: the full step's derivative is zero up to the size of its terms.
-  const double size = std::abs(slope) + std::abs(curvature);
   if (derivative(1.0) <= 1e-9 * size) return 1.0;
   double lo = 0, hi = 1;
   for (int k = 0; k < 60 && hi - lo > 1e-15; ++k) {
@@ -60,8 +65,6 @@ double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen:
   }
   return std::max(hi, 1e-12);
 }
-
-}  // namespace
 
 Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator& c, const ContactIteration& settings,
                                    const std::string& ordering, bool ticking, Json& report, double* residual,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 #include "xfem/core/json_io.h"
@@ -28,6 +29,11 @@ struct ContactOutcome {
   double force = 0.0;              ///< sum over the contact nodes of W p: the normal force the faces carry, N
   Eigen::VectorXd pressure;        ///< M: contact pressure of each contact node, Pa (>= 0)
 };
+
+/// The line search of the contact iterations: the step length in (0, 1] that minimises a convex
+/// energy along a Newton step, given its derivative Pi'(alpha), increasing in alpha: 1 when Pi'(1)
+/// <= 0 up to round-off (1e-9 `size`, the size of Pi's terms), else its root by bisection.
+double convex_step_length(const std::function<double(double)>& derivative, double size);
 
 /// Solves K u = f with frictionless contact on the contact nodes of `c` (docs/METHOD.md
 /// "Contact"): the augmented Lagrangian with multipliers lambda_i (the pressure) and penalty

@@ -137,14 +137,7 @@ double line_search(const LinearSystem& s, const FrictionState& state, const Eige
     }
     return value;
   };
-  const double size = std::abs(slope) + std::abs(curvature);
-  if (derivative(1.0) <= 1e-9 * size) return 1.0;
-  double lo = 0, hi = 1;
-  for (int n = 0; n < 60 && hi - lo > 1e-15; ++n) {
-    const double mid = 0.5 * (lo + hi);
-    (derivative(mid) > 0 ? hi : lo) = mid;
-  }
-  return std::max(hi, 1e-12);
+  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature));
 }
 
 }  // namespace
