@@ -116,8 +116,9 @@ struct TetRuleLayout {
   static TetRuleLayout graded();
   /// The order whose consistent shift the graded rule takes (consistent_face_points: 4 per direction).
   static constexpr int graded_consistent_order = 3;
-  /// The fast rule (integration.rule "fast", issue 35): of_order(3) with fewer points where the
-  /// integrand is smooth on the piece's scale, measured in docs/PERFORMANCE.md ("The fast rule").
+  /// The fast rule (xfem-assemble --rule fast, issue 35): of_order(3) with the symmetric 14-point
+  /// rule on the pieces farther than half their longest edge from the front, where the integrand is
+  /// smooth on the piece's scale; measured in docs/PERFORMANCE.md ("The fast rule").
   static TetRuleLayout fast();
   /// The order whose consistent shift the fast rule takes (the default's: 4 face points per direction).
   static constexpr int fast_consistent_order = 3;
