@@ -7,9 +7,9 @@
 // Usage: branch_rule_accuracy ENRICHED.vtu CUT [--reference N|RULE] [--runs N] RULE...
 //   RULE: uniform:N (the conforming rule of order N before issue 35, n points per direction everywhere and
 //         on the faces; N >= 2) or order:N (TetRuleLayout::of_order(N): integration.rule "conforming" --order N) or
-//         graded (TetRuleLayout::graded(), integration.rule "graded") or
+//         graded (TetRuleLayout::graded(), integration.rule "graded") or fast (TetRuleLayout::fast(), --rule fast) or
 //         layout:radial,along,across,far,distant,distant_ratio,near_levels,far_levels[,consistent[,far_squared
-//                [,remote,remote_ratio]]] (consistent: the order whose consistent shift is taken, faces
+//                [,remote,remote_ratio[,remote_symmetric]]]] (consistent: the order whose consistent shift is taken, faces
 //                consistent_face_points(consistent) per direction)
 #include <algorithm>
 #include <chrono>
@@ -40,6 +40,9 @@ Rule parse(const std::string& s) {
     const int n = std::stoi(s.substr(8));
     r.layout = xfem::TetRuleLayout::uniform(n);
     r.consistent = n - 1;  // faces consistent_face_points(n - 1) = n per direction, as before issue 35
+  } else if (s == "fast") {
+    r.layout = xfem::TetRuleLayout::fast();
+    r.consistent = xfem::TetRuleLayout::fast_consistent_order;
   } else if (s == "graded") {
     r.layout = xfem::TetRuleLayout::graded();
     r.consistent = xfem::TetRuleLayout::graded_consistent_order;
@@ -52,13 +55,14 @@ Rule parse(const std::string& s) {
     std::string item;
     std::vector<double> v;
     while (std::getline(in, item, ',')) v.push_back(std::stod(item));
-    if (v.size() < 8 || v.size() > 12) throw std::runtime_error("layout needs 8 to 12 numbers: " + s);
+    if (v.size() < 8 || v.size() > 13) throw std::runtime_error("layout needs 8 to 12 numbers: " + s);
     xfem::TetRuleLayout& l = r.layout;
     l.radial = int(v[0]), l.along = int(v[1]), l.across = int(v[2]), l.far = int(v[3]), l.distant = int(v[4]);
     l.distant_ratio = v[5], l.near_levels = int(v[6]), l.far_levels = int(v[7]);
     if (v.size() >= 9) r.consistent = int(v[8]);
     if (v.size() >= 10) l.far_squared = v[9] != 0;
     if (v.size() >= 12) l.remote = int(v[10]), l.remote_ratio = v[11];
+    if (v.size() >= 13) l.remote_symmetric = v[12] != 0;
   } else {
     throw std::runtime_error("unknown rule " + s);
   }

@@ -64,9 +64,11 @@ int main(int argc, char** argv) {
                                  "rules collapsed onto the cut front where branch functions live, the blocks without them in "
                                  "closed form), graded (the same, the branch functions' points graded toward the front, "
                                  "--order unused), pieces (the same points for every block), uniform (as conforming "
-                                 "with the points of order n before issue 35: n per direction everywhere, for comparisons) or "
+                                 "with the points of order n before issue 35: n per direction everywhere, for comparisons), fast (as conforming "
+                                 "with fewer points where the integrand is smooth on a piece's scale, --order unused; "
+                                 "docs/METHOD.md) or "
                                  "oversampling (the paper's; default: problem.json's integration.rule, else conforming)")
-      ->check(CLI::IsMember({"oversampling", "conforming", "graded", "pieces", "uniform"}));
+      ->check(CLI::IsMember({"oversampling", "conforming", "graded", "pieces", "uniform", "fast"}));
   app.add_option("--order", request.order, "conforming rule: its order n, Gauss points per direction of the sub-tets (n in the "
                                            "distance to the front, n + 1 on pieces near it, fewer along it and far from it; "
                                            "docs/METHOD.md) (default: problem.json's integration.order, else 3)")

@@ -16,13 +16,15 @@
 #   - a cut missing the body: no enrichment, the plain linear solution, every cell whole.
 # Checks: test/e2e/cut_catalogue.py. Cases failing today are listed in KNOWN_FAIL: they run, their
 # failures are printed, and the suite stays green; a listed case that passes fails the suite
-# (remove it from the list). CATALOGUE_CASES="s-zigzag u-disc" runs only those.
+# (remove it from the list). CATALOGUE_CASES="s-zigzag u-disc" runs only those. CATALOGUE_RULE="--rule fast"
+# assembles with that rule instead of the default (test e2e.cut_catalogue_fast).
 set -u
 # No case fails today (the cuts whose front ends inside the body pass since partially cut
 # elements are split exactly and the branch gradients integrated consistently).
 # CATALOGUE_KNOWN_FAIL="" runs every case as a real test.
 KNOWN_FAIL="${CATALOGUE_KNOWN_FAIL-}"
 KNOWN_FAIL=$(echo $KNOWN_FAIL)
+ASSEMBLE_RULE="${CATALOGUE_RULE-}"
 S=$XFEM_SCRATCH; rm -rf "$S"; mkdir -p "$S"
 B=$XFEM_BIN; PY="python3 $XFEM_SOURCE/test/e2e/cut_catalogue.py"
 BOX="0 0 0 1 1 1"
@@ -98,7 +100,7 @@ run_case() {  # run_case <mesh s|u> <cut name>
   }
   stage classify "$B/xfem-classify" "$S/$m.vtu" --cut "$cut" -o "$d/classified.vtu" --summary "$d/classify.json" &&
   stage enrich "$B/xfem-enrich" "$d/classified.vtu" -o "$d/enriched.vtu" &&
-  stage assemble "$B/xfem-assemble" "$d/enriched.vtu" --cut "$cut" --problem "$problem" -o "$d/system" &&
+  stage assemble "$B/xfem-assemble" "$d/enriched.vtu" --cut "$cut" --problem "$problem" $ASSEMBLE_RULE -o "$d/system" &&
   stage solve "$B/xfem-solve" "$d/system" -o "$d/u.mtx" --report "$d/solve.json" &&
   stage visualize "$B/xfem-visualize" "$d/enriched.vtu" --cut "$cut" --solution "$d/u.mtx" --problem "$problem" --wound-offset 0 \
         -o "$d/deformed.vtu" --faces "$d/wound.vtp" &&

@@ -161,3 +161,41 @@ TEST_CASE("side_volumes: the pieces and the divergence theorem on the cut's poly
                 << worst << " of the tet's volume");
   }
 }
+
+TEST_CASE("closed_form_stiffness: with --rule fast's points the closed-form blocks are the default's",
+          "[closed_form_stiffness]") {
+  // The closed-form blocks take side volumes and face integrals only: original and sign x original
+  // and sign (side volumes), original x branch (the consistent shift makes the tet's integral of
+  // the branch gradients the divergence theorem's). Sign x branch sums the points per side and
+  // branch x branch is the volume rule: those two may change.
+  const xfem::Lame material = xfem::lame(3e5, 0.35);
+  for (const Case& c : catalogue()) {
+    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
+    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
+    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+    xfem::PointRule fast, standard;
+    Eigen::MatrixXd k_fast, k_standard;
+    long branch_tets = 0, fewer = 0;
+    for (int t = 0; t < em.tets(); ++t) {
+      if (!em.branch(t)) continue;
+      ++branch_tets;
+      xfem::conforming_rule(em, splits, t, 3, standard);
+      xfem::conforming_rule(em, splits, t, xfem::TetRuleLayout::fast(), fast);
+      if (fast.size() < standard.size()) ++fewer;
+      xfem::closed_form_stiffness(em, splits, t, standard, material, k_standard, 3);
+      xfem::closed_form_stiffness(em, splits, t, fast, material, k_fast, xfem::TetRuleLayout::fast_consistent_order);
+      const int n = em.size(t);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const int ki = kind(em, t, i), kj = kind(em, t, j);
+          if ((ki == 2 && kj == 2) || (ki == 1 && kj == 2) || (ki == 2 && kj == 1)) continue;
+          const double norm = k_standard.block<3, 3>(3 * i, 3 * j).norm();
+          INFO(c.name << ": tet " << t << ", entries " << i << ", " << j << " of kinds " << kind(em, t, i) << ", " << kind(em, t, j) << ", cut class " << em.cut_class[t] << ", points " << standard.size() << " / " << fast.size());
+          REQUIRE((k_fast.block<3, 3>(3 * i, 3 * j) - k_standard.block<3, 3>(3 * i, 3 * j)).norm() <=
+                  1e-12 * std::max(norm, 1e-300) + 0.0);
+        }
+    }
+    WARN(c.name << ": " << branch_tets << " tets with branch DOFs, " << fewer << " with fewer points under --rule fast");
+    CHECK((branch_tets == 0 || fewer > 0));  // the fast rule is not the default's on any of them
+  }
+}

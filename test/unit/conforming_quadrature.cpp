@@ -290,3 +290,58 @@ TEST_CASE("conforming_quadrature: problem.json integration.rule and order", "[co
                     "problem.json: integration.order must be an integer in 1..20, got 0");
   CHECK(parse(R"({"rule": "oversampling"})").points == 30);
 }
+
+TEST_CASE("conforming_quadrature: the symmetric tet rules integrate degree 2 (4 points) and 5 (14 points) exactly",
+          "[conforming_quadrature]") {
+  // Reference: the plain collapsed rule with 6 points per direction, exact far beyond degree 5
+  // (2 * 6 - 1 >= p + 2 radially, >= p along and across).
+  const V a(0.1, -0.2, 0.05), b(1.3, 0.1, -0.1), c(0.2, 0.9, 0.3), d(0.4, 0.3, 1.1);
+  xfem::PointRule ref;
+  xfem::append_edge_rule(a, b, c, d, 6, 6, 6, 0, ref, false);
+  auto integrate = [](const xfem::PointRule& r, int i, int j, int k) {
+    double s = 0;
+    for (int p = 0; p < r.size(); ++p)
+      s += r.weights[p] * std::pow(r.x[p].x(), i) * std::pow(r.x[p].y(), j) * std::pow(r.x[p].z(), k);
+    return s;
+  };
+  for (int points : {4, 14}) {
+    xfem::PointRule r;
+    xfem::append_symmetric_tet_rule(a, b, c, d, points, -1, r);
+    REQUIRE(r.size() == points);
+    for (int p = 0; p < r.size(); ++p) CHECK((r.weights[p] > 0 && r.side[p] == -1));
+    const int degree = points == 4 ? 2 : 5;
+    double worst_exact = 0, worst_above = 0;  // relative errors at the rule's degree and one above
+    for (int i = 0; i <= degree + 1; ++i)
+      for (int j = 0; i + j <= degree + 1; ++j)
+        for (int k = 0; i + j + k <= degree + 1; ++k) {
+          const double e = integrate(ref, i, j, k);
+          const double err = std::abs(integrate(r, i, j, k) - e) / std::abs(e);
+          (i + j + k <= degree ? worst_exact : worst_above) = std::max(i + j + k <= degree ? worst_exact : worst_above, err);
+        }
+    INFO(points << " points: worst relative error up to degree " << degree << ": " << worst_exact << ", above: " << worst_above);
+    CHECK(worst_exact < 1e-13);
+    CHECK(worst_above > 1e-6);  // and no more: the rule's degree is what it claims
+  }
+  xfem::PointRule r;
+  CHECK_THROWS_AS(xfem::append_symmetric_tet_rule(a, b, c, d, 5, 0, r), xfem::Error);
+}
+
+TEST_CASE("conforming_quadrature: the fast rule lays out fewer points where the front is far on the piece's scale",
+          "[conforming_quadrature]") {
+  // TetRuleLayout::fast() (--rule fast): the default's points at the front and within half a
+  // longest edge of it, the symmetric 14-point rule beyond.
+  const xfem::TetRuleLayout l = xfem::TetRuleLayout::fast();
+  const V o(0, 0, 0), ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  auto points = [&](const xfem::CrackFront& front) {
+    xfem::PointRule r;
+    xfem::append_tet_rule({o, ex, ey, ez}, front, l, 1, r);
+    CHECK(sum(r.weights) == Approx(1.0 / 6.0).epsilon(1e-13));
+    return r.size();
+  };
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{0, 0, 2}, {0, 0, -1}, {1, 0, 0}}})) == 6);
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-1, -1, -1}, {0, 0, 0}, V(1, -1, 0).normalized()}})) == 12);
+  // Longest edge sqrt 2: 0.5 away is within half of it (0.71), 1.2 and 5 beyond.
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-0.5, 0, -1}, {-0.5, 0, 2}, {1, 0, 0}}})) == 64);
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-1.2, 0, -1}, {-1.2, 0, 2}, {1, 0, 0}}})) == 14);
+  CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-5, 0, -1}, {-5, 0, 2}, {1, 0, 0}}})) == 14);
+}

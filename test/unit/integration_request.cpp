@@ -33,6 +33,10 @@ TEST_CASE("integration_request: the command line's rule over problem.json's", "[
     xfem::apply_integration_request(r, p);
     CHECK((p.closed_form && p.graded));
     CHECK(xfem::describe_integration(p, r.points, r.refine) == "--rule graded");
+    r.rule = "fast";
+    xfem::apply_integration_request(r, p);
+    CHECK((p.closed_form && p.fast && !p.graded && !p.uniform));
+    CHECK(xfem::describe_integration(p, r.points, r.refine) == "--rule fast");
   }
   SECTION("--points or --refine alone imply the oversampling rule") {
     xfem::Problem p = problem_with(R"({"rule": "conforming"})");

@@ -91,6 +91,10 @@ struct TetRuleLayout {
   int near_levels = 1;  ///< bisection levels at most, pieces with a vertex on the front
   int far_levels = 0;   ///< ... without one
   bool far_squared = true;  ///< pieces without a vertex on the front: s = sigma^2 (true) or sigma (append_edge_rule)
+  /// Remote pieces (beyond remote_ratio): the symmetric rule of `remote` points (4 or 14,
+  /// append_symmetric_tet_rule) instead of the collapsed remote^3 rule: there the integrand is
+  /// smooth on the piece's scale, and a symmetric rule reaches a higher degree with fewer points.
+  bool remote_symmetric = false;
   /// The rule of order n before issue 35: n points in every direction, s = sigma^2 everywhere,
   /// bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it.
   static TetRuleLayout uniform(int n);
@@ -112,7 +116,19 @@ struct TetRuleLayout {
   static TetRuleLayout graded();
   /// The order whose consistent shift the graded rule takes (consistent_face_points: 4 per direction).
   static constexpr int graded_consistent_order = 3;
+  /// The fast rule (xfem-assemble --rule fast, issue 35): of_order(3) with the symmetric 14-point
+  /// rule on the pieces farther than half their longest edge from the front, where the integrand is
+  /// smooth on the piece's scale; measured in docs/PERFORMANCE.md ("The fast rule").
+  static TetRuleLayout fast();
+  /// The order whose consistent shift the fast rule takes (the default's: 4 face points per direction).
+  static constexpr int fast_consistent_order = 3;
 };
+
+/// A fully symmetric rule on the tet (a, b, c, d) with positive weights: `points` 4 (exact for
+/// polynomials of degree 2) or 14 (degree 5; Walkington's / Keast's rule); appended with `side`.
+/// Throws xfem::Error for another count.
+void append_symmetric_tet_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                               const Eigen::Vector3d& d, int points, int side, PointRule& out);
 
 /// Gauss points per direction on the faces for the consistent shift of a rule of order n
 /// (sampled_gradients, branch_gradient_integrals): n + 1. The face integrands are bounded but

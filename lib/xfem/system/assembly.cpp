@@ -85,14 +85,14 @@ std::vector<Face> all_faces(const TetMesh& mesh) {
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
-                              int conforming_order, bool closed_form, bool graded, bool uniform) {
+                              int conforming_order, bool closed_form, bool graded, bool uniform, bool fast) {
   return stiffness_matrix(em, TetMaterials(MaterialLaw{MaterialModel::Linear, material}), rule, stats, progress,
-                          conforming_order, closed_form, graded, uniform);
+                          conforming_order, closed_form, graded, uniform, fast);
 }
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
                               AssemblyStats* stats, const std::function<void(double)>& progress,
-                              int conforming_order, bool closed_form, bool graded, bool uniform) {
+                              int conforming_order, bool closed_form, bool graded, bool uniform, bool fast) {
   AssemblyStats local;
   AssemblyStats& s = stats ? *stats : local;
   auto clock = std::chrono::steady_clock::now();
@@ -137,10 +137,12 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
           // Points for the branch functions only: the other blocks need the side volumes alone.
           if (!em.branch(t)) points.clear();
           else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
+          else if (fast) conforming_rule(em, splits, t, TetRuleLayout::fast(), points);
           else if (uniform) conforming_rule(em, splits, t, TetRuleLayout::uniform(conforming_order), points);
           else conforming_rule(em, splits, t, conforming_order, points);
           // The consistent shift of the rule's order; uniform(n) had n face points (consistent_face_points).
           const int consistent = graded ? TetRuleLayout::graded_consistent_order
+                                 : fast ? TetRuleLayout::fast_consistent_order
                                  : uniform ? conforming_order - 1 : conforming_order;
           closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces);
         } else if (conforming_order > 0) {
@@ -225,7 +227,8 @@ LinearSystem assemble_system(const EnrichedMesh& em, const Problem& problem, con
   if (!em.cuts.empty() && !conforming)
     throw Error(problem.file + ": several cuts are integrated by the conforming rule only (integration.rule \"conforming\", the default)");
   sys.K = stiffness_matrix(em, materials, oversampling_quadrature(points, refine), &s, progress,
-                           conforming ? problem.order : 0, problem.closed_form, problem.graded, problem.uniform);
+                           conforming ? problem.order : 0, problem.closed_form, problem.graded, problem.uniform,
+                           problem.fast);
   const auto clock = std::chrono::steady_clock::now();
   sys.f = load_vector(em, problem);
   add_cut_loads(em, problem, sys.f);  // the cuts' faces (cut_loads.h): enriched DOFs only

@@ -34,17 +34,17 @@ struct AssemblyStats {
 /// else every block from the points (element_stiffness_at_points: integration.rule "pieces"); with
 /// `graded` (and closed_form) the branch functions' points by TetRuleLayout::graded() instead of the rule
 /// of order n (TetRuleLayout::of_order), with `uniform` by TetRuleLayout::uniform(n) with the shift on n
-/// face points (the rule of order n before issue 35; n >= 2).
+/// face points (the rule of order n before issue 35; n >= 2), with `fast` by TetRuleLayout::fast().
 /// `progress` (optional) gets the fraction of tets done.
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
                               AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
                               int conforming_order = 0, bool closed_form = true, bool graded = false,
-                              bool uniform = false);
+                              bool uniform = false, bool fast = false);
 /// The same with each tet's own material (materials.lame(t); problem.json `materials`).
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materials, const Quadrature& rule,
                               AssemblyStats* stats = nullptr, const std::function<void(double)>& progress = {},
                               int conforming_order = 0, bool closed_form = true, bool graded = false,
-                              bool uniform = false);
+                              bool uniform = false, bool fast = false);
 
 /// The load vector f (3N, newtons; paper formula (7)) on the ORIGINAL DOFs only (DESIGN.md):
 /// body force b V/4 to each node of each tet (exact for linear N), traction t A/3 to each node of

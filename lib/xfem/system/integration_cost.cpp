@@ -11,8 +11,8 @@ double integration_points_estimate(const EnrichedMesh& em, const Problem& proble
                                    long* enriched_tets) {
   const bool conforming = problem.rule == Problem::Rule::Conforming;
   const double m = std::floor(std::cbrt(static_cast<double>(points))) + 1;  // m^3 > points
-  // The pieces off the front take the most points: (order + 1)^3 (TetRuleLayout::of_order), graded 4^3.
-  const double n3 = problem.graded ? 64.0 : std::pow(problem.order + (problem.uniform ? 0 : 1), 3);
+  // The pieces off the front take the most points: (order + 1)^3 (TetRuleLayout::of_order), graded and fast 4^3.
+  const double n3 = problem.graded || problem.fast ? 64.0 : std::pow(problem.order + (problem.uniform ? 0 : 1), 3);
   double estimate = 0;
   *enriched_tets = 0;
   for (int t = 0; t < em.tets(); ++t) {

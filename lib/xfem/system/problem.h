@@ -146,6 +146,10 @@ struct Problem {
   /// with the consistent shift on `order` face points: the rule of order n before issue 35 (xfem-assemble
   /// --rule uniform, for comparisons; not a problem.json rule).
   bool uniform = false;
+  /// Conforming rule, closed form: the branch functions' points laid out by TetRuleLayout::fast()
+  /// (xfem-assemble --rule fast, issue 35: fewer points where the integrand is smooth; `order` unused;
+  /// not a problem.json rule).
+  bool fast = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  ///< N/m^3
