@@ -17,29 +17,6 @@
 namespace xfem {
 namespace {
 
-// The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
-bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
-                      double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
-  const TriangleMesh& cm = cut.mesh();
-  std::array<Eigen::Vector3d, 3> v;
-  std::array<double, 3> d;
-  for (int k = 0; k < 3; ++k) {
-    v[k] = cm.points.row(cm.triangles(f, k)).transpose();
-    d[k] = normal.dot(v[k] - point);
-    if (std::abs(d[k]) <= tolerance) d[k] = 0;
-  }
-  std::vector<Eigen::Vector3d> ends;
-  for (int k = 0; k < 3; ++k) {
-    const int l = (k + 1) % 3;
-    if (d[k] == 0) ends.push_back(v[k]);
-    if ((d[k] > 0 && d[l] < 0) || (d[k] < 0 && d[l] > 0)) ends.push_back(v[k] + d[k] / (d[k] - d[l]) * (v[l] - v[k]));
-  }
-  if (ends.size() != 2) return false;  // missing the plane, touching it at a corner, or lying in it
-  p = ends[0];
-  q = ends[1];
-  return true;
-}
-
 // The integrals over face (A, B, C) (its points in increasing id order, `normal` its unit normal)
 // of N_v F_j for v = A, B, C and the four branch functions, for a tet whose outward normal is
 // +normal [0] and -normal [1]. Everything here depends on the face alone, so that the two tets
@@ -53,54 +30,11 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
                                                           const Eigen::Vector3d& normal, int depth,
                                                           const std::vector<double>& nodes,
                                                           const std::vector<double>& weights) {
-  // Tolerances of the face's own size: both tets decide alike.
-  const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
-  const double face_tolerance = 1e-12 * face_h;
-  std::vector<Polygon> parts{{A, B, C}}, next;
-  Polygon above, below;
-  if (cut) {
-    for (const int tri : meeting) {
-      Eigen::Vector3d p, q;
-      if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
-      const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
-      const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
-      next.clear();
-      for (const Polygon& part : parts) {
-        split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
-        if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(p, q, part, normal) > 1e-9 * face_h) {
-          next.push_back(above);
-          next.push_back(below);
-        } else {
-          next.push_back(part);
-        }
-      }
-      parts.swap(next);
-    }
-  }
-  // The front segments near the face: its own bounding box, so that both tets see the same.
-  std::vector<const FrontSegment*> face_fronts;
-  const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
-  for (const FrontSegment* segment : fronts)
-    if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
-        (segment->p0.cwiseMax(segment->p1).array() >= flo.array() - face_tolerance).all())
-      face_fronts.push_back(segment);
-  // A front lying in the face's plane splits it too: the cut covers the face on one side of the
-  // front only (there each tet sees its own side's F), and F ~ sqrt(r) is smooth on either side.
-  for (const FrontSegment* segment : face_fronts) {
-    if (std::abs(normal.dot(segment->p0 - A)) > face_tolerance || std::abs(normal.dot(segment->p1 - A)) > face_tolerance) continue;
-    const Eigen::Vector3d cutting = (segment->p1 - segment->p0).cross(normal).normalized();
-    next.clear();
-    for (const Polygon& part : parts) {
-      split_polygon(part, segment->p0, cutting, face_tolerance, above, below);
-      if (above.size() >= 3 && below.size() >= 3 && segment_length_in_polygon(segment->p0, segment->p1, part, normal) > 1e-9 * face_h) {
-        next.push_back(above);
-        next.push_back(below);
-      } else {
-        next.push_back(part);
-      }
-    }
-    parts.swap(next);
-  }
+  // Split by the face alone (its own tolerances and fronts): both tets decide alike.
+  const FaceParts face = split_face(cut, fronts, meeting, A, B, C, normal);
+  const double face_tolerance = face.tolerance;
+  const std::vector<const FrontSegment*>& face_fronts = face.fronts;
+  const std::vector<Polygon>& parts = face.parts;
   // Barycentric coordinates on the face, for N_v.
   Eigen::Matrix<double, 3, 2> J;
   J << B - A, C - A;

@@ -46,7 +46,6 @@ void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eig
 }
 
 // The segment where triangle f of the cut crosses the plane (point, unit normal); false if none.
-// The same test as consistent_gradients.cpp's (face_integrals splits a face along it).
 bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
                       double tolerance, Eigen::Vector3d& p, Eigen::Vector3d& q) {
   const TriangleMesh& cm = cut.mesh();
@@ -71,8 +70,7 @@ bool crossing_segment(const CutSurface& cut, int f, const Eigen::Vector3d& point
 
 // The points of the parts of tet face (A, B, C) (its corners in increasing node id order, `normal`
 // its unit normal) that lie on the cut, made exactly as branch_gradient_integrals makes its face
-// points (consistent_gradients.cpp, face_integrals): the face split along the trace of every cut
-// triangle of `meeting` crossing a part's inside, then along a front lying in its plane, each part
+// points (consistent_gradients.cpp, face_integrals): the face split by split_face, each part
 // fanned from polygon_fan_apex over the fronts near the face. With the same points, the jump of
 // N_l F_j that the stiffness's consistent shift integrates over the face and the one a load or a
 // contact pressure integrates agree to round-off; another rule of the same polygon (the cut
@@ -84,15 +82,45 @@ void face_points_on_cut(const CutSurface& cut, const std::vector<const FrontSegm
                         const Eigen::Vector3d& C, const Eigen::Vector3d& normal, int depth,
                         const std::vector<double>& nodes, const std::vector<double>& weights,
                         std::vector<Eigen::Vector3d>& x, std::vector<double>& w, std::vector<int>& triangle) {
+  const FaceParts face = split_face(&cut, fronts, meeting, A, B, C, normal);
+  const double face_tolerance = face.tolerance;
+  const std::vector<const FrontSegment*>& face_fronts = face.fronts;
+  const std::vector<Polygon>& parts = face.parts;
+  std::vector<Eigen::Vector3d> px;
+  std::vector<double> pw;
+  for (const Polygon& part : parts) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& v : part) centre += v;
+    centre /= static_cast<double>(part.size());
+    const CutSurface::Closest near = cut.closest(centre);
+    if (near.distance > face_tolerance) continue;  // off the cut (beyond its front): no face there
+    polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, px, pw);
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      x.push_back(px[i]);
+      w.push_back(pw[i]);
+      triangle.push_back(near.triangle);
+    }
+  }
+}
+
+}  // namespace
+
+FaceParts split_face(const CutSurface* cut, const std::vector<const FrontSegment*>& fronts,
+                     const std::vector<int>& meeting, const Eigen::Vector3d& A, const Eigen::Vector3d& B,
+                     const Eigen::Vector3d& C, const Eigen::Vector3d& normal) {
   const double face_h = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
   const double face_tolerance = 1e-12 * face_h;
-  std::vector<Polygon> parts{{A, B, C}}, next;
+  FaceParts face;
+  face.tolerance = face_tolerance;
+  std::vector<Polygon>& parts = face.parts;
+  parts = {{A, B, C}};
+  std::vector<Polygon> next;
   Polygon above, below;
-  for (const int tri : meeting) {
+  for (const int tri : cut ? meeting : std::vector<int>{}) {
     Eigen::Vector3d p, q;
-    if (!crossing_segment(cut, tri, A, normal, face_tolerance, p, q)) continue;
-    const Eigen::Vector3d cut_normal = cut.unit_normal(tri);
-    const Eigen::Vector3d cut_point = cut.mesh().points.row(cut.mesh().triangles(tri, 0)).transpose();
+    if (!crossing_segment(*cut, tri, A, normal, face_tolerance, p, q)) continue;
+    const Eigen::Vector3d cut_normal = cut->unit_normal(tri);
+    const Eigen::Vector3d cut_point = cut->mesh().points.row(cut->mesh().triangles(tri, 0)).transpose();
     next.clear();
     for (const Polygon& part : parts) {
       split_polygon(part, cut_point, cut_normal, face_tolerance, above, below);
@@ -105,7 +133,7 @@ void face_points_on_cut(const CutSurface& cut, const std::vector<const FrontSegm
     }
     parts.swap(next);
   }
-  std::vector<const FrontSegment*> face_fronts;
+  std::vector<const FrontSegment*>& face_fronts = face.fronts;
   const Eigen::Vector3d flo = A.cwiseMin(B).cwiseMin(C), fhi = A.cwiseMax(B).cwiseMax(C);
   for (const FrontSegment* segment : fronts)
     if ((segment->p0.cwiseMin(segment->p1).array() <= fhi.array() + face_tolerance).all() &&
@@ -126,24 +154,8 @@ void face_points_on_cut(const CutSurface& cut, const std::vector<const FrontSegm
     }
     parts.swap(next);
   }
-  std::vector<Eigen::Vector3d> px;
-  std::vector<double> pw;
-  for (const Polygon& part : parts) {
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& v : part) centre += v;
-    centre /= static_cast<double>(part.size());
-    const CutSurface::Closest near = cut.closest(centre);
-    if (near.distance > face_tolerance) continue;  // off the cut (beyond its front): no face there
-    polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, px, pw);
-    for (std::size_t i = 0; i < px.size(); ++i) {
-      x.push_back(px[i]);
-      w.push_back(pw[i]);
-      triangle.push_back(near.triangle);
-    }
-  }
+  return face;
 }
-
-}  // namespace
 
 int corner_off_face_holding(const TetCorners& p, const std::vector<Eigen::Vector3d>& polygon, double tol) {
   for (int skip = 0; skip < 4; ++skip) {

@@ -35,6 +35,22 @@ std::vector<const FrontSegment*> fronts_near(const CrackFront& front, const std:
 Eigen::Vector3d polygon_fan_apex(const Polygon& poly, const Eigen::Vector3d& normal,
                                  const std::vector<const FrontSegment*>& fronts, double tolerance);
 
+/// Tet face (A, B, C) (its corners in increasing node id order, `normal` its unit normal) split
+/// where the branch functions are not smooth on it: along the trace of every cut triangle of
+/// `meeting` crossing a part's inside (none without a cut), then along every front segment lying
+/// in its plane. Everything depends on the face alone (tolerances of its own size, the fronts
+/// near its own bounding box), so the two tets sharing it split it alike; the stiffness's face
+/// integrals (consistent_gradients) and the cut's face points (face_points_on_cut) share it, so a
+/// load or a contact pressure sees the jump the stiffness integrates.
+struct FaceParts {
+  std::vector<Polygon> parts;
+  std::vector<const FrontSegment*> fronts;  ///< the segments of `fronts` whose boxes meet the face's
+  double tolerance = 0;                     ///< 1e-12 of the face's longest edge
+};
+FaceParts split_face(const CutSurface* cut, const std::vector<const FrontSegment*>& fronts,
+                     const std::vector<int>& meeting, const Eigen::Vector3d& A, const Eigen::Vector3d& B,
+                     const Eigen::Vector3d& C, const Eigen::Vector3d& normal);
+
 /// One integration point on a cut's faces (docs/METHOD.md "Loads on the cut's faces").
 struct CutFacePoint {
   int tet = -1;                  ///< the mesh tet it lies in
