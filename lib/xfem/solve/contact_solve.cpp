@@ -66,6 +66,28 @@ double convex_step_length(const std::function<double(double)>& derivative, doubl
   return std::max(hi, 1e-12);
 }
 
+void report_contact(const ContactOperator& c, const ContactOutcome& out, Json& report) {
+  using cli::three_digits;
+  const long Q = c.points();
+  cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " contact nodes in contact (area " +
+            three_digits(out.active_area) + " m^2), " + std::to_string(out.solves) + " solves, " +
+            std::to_string(out.updates) + " multiplier updates; largest penetration " +
+            three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m), normal force " +
+            three_digits(out.force) + " N");
+  report["contact"] = Json{{"points", Q},
+                           {"area", Q > 0 ? c.weight.sum() : 0.0},
+                           {"active_points", out.active},
+                           {"active_area", out.active_area},
+                           {"solves", out.solves},
+                           {"multiplier_updates", out.updates},
+                           {"damped_steps", out.damped},
+                           {"max_penetration", out.max_penetration},
+                           {"tolerance", out.tolerance},
+                           {"opened_volume", out.opened_volume},
+                           {"force", out.force},
+                           {"max_pressure", Q > 0 ? out.pressure.maxCoeff() : 0.0}};
+}
+
 Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator& c, const ContactIteration& settings,
                                    const std::string& ordering, bool ticking, Json& report, double* residual,
                                    ContactOutcome* outcome) {
@@ -167,23 +189,7 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
     }
     out.max_penetration = std::max(out.max_penetration, -g[q]);
   }
-  cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " contact nodes in contact (area " +
-            three_digits(out.active_area) + " m^2), " + std::to_string(out.solves) + " solves, " +
-            std::to_string(out.updates) + " multiplier updates; largest penetration " +
-            three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m), normal force " +
-            three_digits(out.force) + " N");
-  report["contact"] = Json{{"points", Q},
-                           {"area", Q > 0 ? c.weight.sum() : 0.0},
-                           {"active_points", out.active},
-                           {"active_area", out.active_area},
-                           {"solves", out.solves},
-                           {"multiplier_updates", out.updates},
-                           {"damped_steps", out.damped},
-                           {"max_penetration", out.max_penetration},
-                           {"tolerance", out.tolerance},
-                           {"opened_volume", out.opened_volume},
-                           {"force", out.force},
-                           {"max_pressure", Q > 0 ? out.pressure.maxCoeff() : 0.0}};
+  report_contact(c, out, report);
   if (outcome) *outcome = out;
   return u;
 }

@@ -35,6 +35,10 @@ struct ContactOutcome {
 /// <= 0 up to round-off (1e-9 `size`, the size of Pi's terms), else its root by bisection.
 double convex_step_length(const std::function<double(double)>& derivative, double size);
 
+/// Prints the contact outcome's line on stderr and fills `report["contact"]` (docs/FORMATS.md):
+/// xfem-solve's report of contact, frictionless or not.
+void report_contact(const ContactOperator& c, const ContactOutcome& out, Json& report);
+
 /// Solves K u = f with frictionless contact on the contact nodes of `c` (docs/METHOD.md
 /// "Contact"): the augmented Lagrangian with multipliers lambda_i (the pressure) and penalty
 /// kappa_i per node, whose inner problem for fixed lambda is solved by an active-set (semismooth

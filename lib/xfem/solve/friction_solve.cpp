@@ -298,26 +298,10 @@ Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator
       fr.max_traction_ratio = std::max(fr.max_traction_ratio, t.norm() / (c.friction[q] * out.pressure[q]));
   }
   fr.shear_force = shear.norm();
-  cli::info("contact: " + std::to_string(out.active) + " of " + std::to_string(Q) + " contact nodes in contact (area " +
-            three_digits(out.active_area) + " m^2), " + std::to_string(out.solves) + " solves, " +
-            std::to_string(out.updates) + " multiplier updates; largest penetration " +
-            three_digits(out.max_penetration) + " m (tolerance " + three_digits(out.tolerance) + " m), normal force " +
-            three_digits(out.force) + " N");
+  report_contact(c, out, report);
   cli::info("friction: " + std::to_string(fr.stick) + " nodes stick (area " + three_digits(fr.stick_area) + " m^2), " +
             std::to_string(fr.slip) + " slip (area " + three_digits(fr.slip_area) + " m^2); largest slip " +
             three_digits(fr.max_slip) + " m, shear force " + three_digits(fr.shear_force) + " N");
-  report["contact"] = Json{{"points", Q},
-                           {"area", Q > 0 ? c.weight.sum() : 0.0},
-                           {"active_points", out.active},
-                           {"active_area", out.active_area},
-                           {"solves", out.solves},
-                           {"multiplier_updates", out.updates},
-                           {"damped_steps", out.damped},
-                           {"max_penetration", out.max_penetration},
-                           {"tolerance", out.tolerance},
-                           {"opened_volume", out.opened_volume},
-                           {"force", out.force},
-                           {"max_pressure", Q > 0 ? out.pressure.maxCoeff() : 0.0}};
   report["friction"] = Json{{"max_coefficient", Q > 0 ? c.friction.maxCoeff() : 0.0},
                             {"stick_points", fr.stick},
                             {"stick_area", fr.stick_area},
