@@ -14,22 +14,6 @@
 namespace xfem {
 namespace {
 
-// K with explicit zeros wherever the penalty term G^T diag(c) G may add something (G^T G's
-// pattern: a contact node's row couples the DOFs of every cut tet around the node, which K does
-// not always couple): the one pattern of every solve, so that CHOLMOD analyses it once.
-SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& G) {
-  const SparseMatrix GtG = SparseMatrix(G.transpose()) * G;
-  std::vector<Eigen::Triplet<double, int>> zeros;
-  zeros.reserve(static_cast<std::size_t>(GtG.nonZeros()));
-  for (int j = 0; j < GtG.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(GtG, j); it; ++it) zeros.emplace_back(static_cast<int>(it.row()), j, 0.0);
-  SparseMatrix Z(K.rows(), K.cols());
-  Z.setFromTriplets(zeros.begin(), zeros.end());
-  SparseMatrix P = K + Z;
-  P.makeCompressed();
-  return P;
-}
-
 // Solves of the inner (fixed multipliers) iteration before the multipliers are updated anyway.
 constexpr int kInnerSolves = 10;
 
@@ -54,6 +38,19 @@ double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen:
 }
 
 }  // namespace
+
+SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& G) {
+  const SparseMatrix GtG = SparseMatrix(G.transpose()) * G;
+  std::vector<Eigen::Triplet<double, int>> zeros;
+  zeros.reserve(static_cast<std::size_t>(GtG.nonZeros()));
+  for (int j = 0; j < GtG.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(GtG, j); it; ++it) zeros.emplace_back(static_cast<int>(it.row()), j, 0.0);
+  SparseMatrix Z(K.rows(), K.cols());
+  Z.setFromTriplets(zeros.begin(), zeros.end());
+  SparseMatrix P = K + Z;
+  P.makeCompressed();
+  return P;
+}
 
 double convex_step_length(const std::function<double(double)>& derivative, double size) {
   // Round-off: the full step's derivative is zero up to the size of its terms.

@@ -30,6 +30,11 @@ struct ContactOutcome {
   Eigen::VectorXd pressure;        ///< M: contact pressure of each contact node, Pa (>= 0)
 };
 
+/// K with explicit zeros wherever a penalty term B^T diag(c) B may add something (B^T B's pattern:
+/// a contact node's row couples the DOFs of every cut tet around the node, which K does not always
+/// couple): the one pattern of every solve of a contact iteration, so that CHOLMOD analyses it once.
+SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& B);
+
 /// The line search of the contact iterations: the step length in (0, 1] that minimises a convex
 /// energy along a Newton step, given its derivative Pi'(alpha), increasing in alpha: 1 when Pi'(1)
 /// <= 0 up to round-off (1e-9 `size`, the size of Pi's terms), else its root by bisection.

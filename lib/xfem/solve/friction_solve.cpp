@@ -30,16 +30,7 @@ SparseMatrix friction_pattern(const SparseMatrix& K, const ContactOperator& c) {
     for (SparseMatrix::InnerIterator it(c.T, j); it; ++it) ones.emplace_back(static_cast<int>(it.row() / 2), j, 1.0);
   SparseMatrix B(c.G.rows(), c.G.cols());
   B.setFromTriplets(ones.begin(), ones.end());
-  const SparseMatrix BtB = SparseMatrix(B.transpose()) * B;
-  std::vector<Eigen::Triplet<double, int>> zeros;
-  zeros.reserve(static_cast<std::size_t>(BtB.nonZeros()));
-  for (int j = 0; j < BtB.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(BtB, j); it; ++it) zeros.emplace_back(static_cast<int>(it.row()), j, 0.0);
-  SparseMatrix Z(K.rows(), K.cols());
-  Z.setFromTriplets(zeros.begin(), zeros.end());
-  SparseMatrix P = K + Z;
-  P.makeCompressed();
-  return P;
+  return contact_pattern(K, B);
 }
 
 // The projection of z on the disc of radius b >= 0 (the friction traction of the augmented
