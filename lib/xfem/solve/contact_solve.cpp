@@ -52,6 +52,20 @@ SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& G) {
   return P;
 }
 
+Eigen::VectorXd solve_penalised(const LinearSystem& s, const SparseMatrix& K, const Eigen::VectorXd& f,
+                                const std::string& ordering, const char* what, std::unique_ptr<CholeskyFactor>& factor,
+                                ReducedSystem& reduced) {
+  reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
+  if (!factor)
+    factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
+  else
+    factor->refactor(reduced.K);
+  if (factor->rcond < 1e-14)
+    cli::warn(std::string(what) + ": K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
+              cli::three_digits(factor->rcond) + "): lower the contact penalty");
+  return expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
+}
+
 double convex_step_length(const std::function<double(double)>& derivative, double size) {
   // Round-off: the full step's derivative is zero up to the size of its terms.
   if (derivative(1.0) <= 1e-9 * size) return 1.0;
@@ -139,15 +153,8 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
       if (K.nonZeros() != pattern.nonZeros())  // the penalty term lies inside G^T G's pattern: never
         throw Error("contact: the penalty term left the contact pattern (internal error)");
       const Eigen::VectorXd f = s.f + Gt * force;
-      const ReducedSystem reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
-      if (!factor)
-        factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
-      else
-        factor->refactor(reduced.K);
-      if (factor->rcond < 1e-14)
-        cli::warn("contact: K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
-                  three_digits(factor->rcond) + "): lower the contact penalty");
-      const Eigen::VectorXd next = expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
+      ReducedSystem reduced;
+      const Eigen::VectorXd next = solve_penalised(s, K, f, ordering, "contact", factor, reduced);
       ++out.solves;
       // The Newton step next - u, damped where it would raise the energy of the fixed-lambda
       // problem (line_search): on a curved cut the undamped active-set steps cycle.

@@ -2,9 +2,12 @@
 #pragma once
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "xfem/core/json_io.h"
+#include "xfem/solve/cholmod_solver.h"
+#include "xfem/system/dirichlet.h"
 #include "xfem/system/contact_operator.h"
 #include "xfem/system/linear_system.h"
 
@@ -34,6 +37,14 @@ struct ContactOutcome {
 /// a contact node's row couples the DOFs of every cut tet around the node, which K does not always
 /// couple): the one pattern of every solve of a contact iteration, so that CHOLMOD analyses it once.
 SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& B);
+
+/// One solve of a contact iteration: K (the contact pattern, the penalty terms added) and f with
+/// the Dirichlet conditions eliminated, CHOLMOD's analysis done on the first call and reused
+/// (`factor` refactored) after; a warning prefixed by `what` when the penalty makes K near-singular.
+/// `reduced` gets the reduced system (for the solution's residual).
+Eigen::VectorXd solve_penalised(const LinearSystem& s, const SparseMatrix& K, const Eigen::VectorXd& f,
+                                const std::string& ordering, const char* what, std::unique_ptr<CholeskyFactor>& factor,
+                                ReducedSystem& reduced);
 
 /// The line search of the contact iterations: the step length in (0, 1] that minimises a convex
 /// energy along a Newton step, given its derivative Pi'(alpha), increasing in alpha: 1 when Pi'(1)

@@ -203,15 +203,8 @@ Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator
       if (K.nonZeros() != pattern.nonZeros())
         throw Error("friction: the penalty terms left the contact pattern (internal error)");
       const Eigen::VectorXd f = s.f + Gt * force + Tt * tangential_force;
-      const ReducedSystem reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
-      if (!factor)
-        factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
-      else
-        factor->refactor(reduced.K);
-      if (factor->rcond < 1e-14)
-        cli::warn("friction: K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
-                  three_digits(factor->rcond) + "): lower the contact penalty");
-      const Eigen::VectorXd next = expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
+      ReducedSystem reduced;
+      const Eigen::VectorXd next = solve_penalised(s, K, f, ordering, "friction", factor, reduced);
       ++out.solves;
       const Eigen::VectorXd step = next - u;
       const double alpha = line_search(s, state, u, step);
