@@ -14,8 +14,8 @@
 #include "xfem/system/problem.h"
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/fracture/stress_intensity.h"
+#include "xfem/post/front_face_loads.h"
 #include "xfem/post/solution_provenance_check.h"
-#include "xfem/solve/contact_pressure_file.h"
 
 namespace {
 
@@ -112,19 +112,8 @@ int main(int argc, char** argv) {
     xfem::check_cut_indices(problem, xfem::cut_count(em));
     xfem::select_front_of(em, front_of, input);
     // Loads on the evaluated cut's faces: the interaction integral's crack-face term.
-    for (const xfem::CutLoad& load : problem.cut_loads)
-      if (load.cut == front_of) options.face_pressure += load.pressure, options.face_traction += load.traction;
-    xfem::FaceContactPressure contact;
-    if (!contact_path.empty()) {
-      if (!problem.contact.applies_to(front_of))
-        throw xfem::Error(problem_path + ": contact is off for cut " + std::to_string(front_of) + ", yet --contact-pressure is given");
-      contact = xfem::face_contact_pressure(xfem::read_contact_pressure(contact_path, em.mesh.points.rows(), xfem::cut_count(em)),
-                                            front_of, contact_path);
-      options.contact_pressure = &contact;
-    } else if (problem.contact.applies_to(front_of)) {
-      xfem::cli::warn(problem_path + ": contact is on for cut " + std::to_string(front_of) + ": K leaves out the contact "
-                      "pressure on its faces (right where they are open, not where they touch): give --contact-pressure");
-    }
+    const xfem::FaceContactPressure contact = xfem::front_face_loads(problem, problem_path, em, front_of, contact_path, options);
+    if (!contact.pressure.empty()) options.contact_pressure = &contact;
     for (const auto& w : warnings) xfem::cli::warn(w);
     if (em.front.empty()) throw xfem::Error(input + ": the cut has no front inside the body (nothing to compute)");
     const Eigen::VectorXd u = xfem::read_vector(solution);
