@@ -10,7 +10,8 @@
 #include <algorithm>
 #include <iterator>
 #include <cmath>
-#include <map>
+#include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "xfem/core/error.h"
@@ -72,7 +73,15 @@ struct CutSurface::Impl {
   Tree tree;
   std::vector<Eigen::Vector3d> normals;         // unit normal per triangle
   std::vector<Eigen::Vector3d> vertex_normals;  // angle-weighted pseudo-normal per point
-  std::map<std::pair<int, int>, Eigen::Vector3d> edge_normals;  // sum of adjacent unit normals
+  // Per undirected edge, by edge: the sum of the adjacent unit normals. A sorted vector, not a map:
+  // every tool reading a cut of thousands of triangles builds it, and the map's nodes cost more.
+  std::vector<std::pair<std::pair<int, int>, Eigen::Vector3d>> edge_normals;
+  const Eigen::Vector3d& edge_normal(std::pair<int, int> key) const {
+    const auto it = std::lower_bound(edge_normals.begin(), edge_normals.end(), key,
+                                     [](const auto& e, const std::pair<int, int>& k) { return e.first < k; });
+    if (it == edge_normals.end() || it->first != key) throw std::out_of_range("cut surface: no such edge");
+    return it->second;
+  }
   std::vector<BoundaryEdge> boundary;
 
   Eigen::Vector3d point(int i) const { return mesh.points.row(i).transpose(); }
@@ -88,7 +97,13 @@ CutSurface::CutSurface(TriangleMesh cut) : impl_(std::make_unique<Impl>()) {
   m.triangles.reserve(F);
   m.normals.resize(F);
   m.vertex_normals.assign(m.mesh.points.rows(), Eigen::Vector3d::Zero());
-  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;  // key -> (tri, local)
+  struct EdgeUse {
+    std::pair<int, int> key;  // the undirected edge
+    int f, i;                 // triangle f's edge i (from vertex i to i + 1)
+    bool operator<(const EdgeUse& o) const { return std::tie(key, f, i) < std::tie(o.key, o.f, o.i); }
+  };
+  std::vector<EdgeUse> edges;  // sorted below: by edge, then by triangle as they were added
+  edges.reserve(3 * static_cast<std::size_t>(F));
   for (int f = 0; f < F; ++f) {
     const int v[3] = {m.mesh.triangles(f, 0), m.mesh.triangles(f, 1), m.mesh.triangles(f, 2)};
     const Eigen::Vector3d p[3] = {m.point(v[0]), m.point(v[1]), m.point(v[2])};
@@ -102,19 +117,22 @@ CutSurface::CutSurface(TriangleMesh cut) : impl_(std::make_unique<Impl>()) {
       const Eigen::Vector3d e1 = (p[(i + 1) % 3] - p[i]).normalized(), e2 = (p[(i + 2) % 3] - p[i]).normalized();
       const double angle = std::acos(std::clamp(e1.dot(e2), -1.0, 1.0));
       m.vertex_normals[v[i]] += angle * m.normals[f];
-      edges[edge_key(v[i], v[(i + 1) % 3])].push_back({f, i});
+      edges.push_back({edge_key(v[i], v[(i + 1) % 3]), f, i});
     }
   }
-  for (const auto& [key, users] : edges) {
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t b = 0; b < edges.size();) {
+    std::size_t e = b;
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    for (const auto& [f, i] : users) n += m.normals[f];
-    m.edge_normals[key] = n;
-    if (users.size() == 1) {
-      const auto [f, i] = users.front();
+    for (; e < edges.size() && edges[e].key == edges[b].key; ++e) n += m.normals[edges[e].f];
+    m.edge_normals.emplace_back(edges[b].key, n);
+    if (e - b == 1) {
+      const int f = edges[b].f, i = edges[b].i;
       m.boundary.push_back({m.mesh.triangles(f, i), m.mesh.triangles(f, (i + 1) % 3), f});
     }
+    b = e;
   }
-  // Deterministic order independent of the map: by triangle, then by its own edge order.
+  // Deterministic order independent of the edges' order: by triangle, then by its own edge order.
   std::sort(m.boundary.begin(), m.boundary.end(), [&](const BoundaryEdge& x, const BoundaryEdge& y) {
     if (x.triangle != y.triangle) return x.triangle < y.triangle;
     auto local = [&](const BoundaryEdge& e) {
@@ -170,7 +188,7 @@ int CutSurface::Impl::side(const Eigen::Vector3d& x, int f) const {
   Eigen::Vector3d n;
   switch (feature.kind) {
     case Feature::Face: n = m.normals[f]; break;
-    case Feature::Edge: n = m.edge_normals.at(edge_key(v[feature.index], v[(feature.index + 1) % 3])); break;
+    case Feature::Edge: n = m.edge_normal(edge_key(v[feature.index], v[(feature.index + 1) % 3])); break;
     default: n = m.vertex_normals[v[feature.index]]; break;
   }
   // A point on the cut (or exactly in the plane of the pseudo-normal) counts as above: +1.

@@ -22,6 +22,7 @@
 #include "xfem/core/error.h"
 #include "xfem/io/label_image.h"
 #include "xfem/io/vtk_io_detail.h"
+#include "xfem/io/vtk_on_demand.h"
 
 namespace xfem {
 namespace {
@@ -76,7 +77,12 @@ vtkImageData* run_vtk(Reader* reader, const VtkMessages& messages, const std::st
 // NIfTI: VTK's qform or sform (sform when the file sets it) maps VTK's voxel coordinates to the
 // NIfTI world (RAS), with the spacing factored out and the slices reordered when qfac is -1.
 void nifti_geometry(vtkNIFTIImageReader* reader, vtkImageData* out, LabelImage& image, const std::string& path) {
-  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  // vtkNIFTIImageReader::GetNIFTIHeader() is no virtual function and its library is not linked
+  // (vtk_on_demand.h): called by address, `this` as the first argument (the Itanium C++ ABI's
+  // convention for a non-virtual member function).
+  const auto get_header = reinterpret_cast<vtkNIFTIImageHeader* (*)(vtkNIFTIImageReader*)>(vtk_symbol(
+      vtk_io_image_library, "_ZN19vtkNIFTIImageReader14GetNIFTIHeaderEv", path, "label map"));
+  vtkNIFTIImageHeader* header = get_header(reader);
   const double slope = header->GetSclSlope(), intercept = header->GetSclInter();
   if (!((slope == 0 || slope == 1) && intercept == 0))
     throw Error(path + ": NIfTI scl_slope " + short_number(slope) + ", scl_inter " + short_number(intercept) +
@@ -142,16 +148,19 @@ LabelImage read_label_image(const std::string& path) {
   }
   VtkMessages messages;
   if (header.format == "nrrd") {
-    auto reader = Ptr<vtkNrrdReader>::New();
+    auto reader = Ptr<vtkNrrdReader>::Take(
+        vtk_new_on_demand<vtkNrrdReader>(vtk_io_image_library, "_ZN13vtkNrrdReader3NewEv", path, "label map"));
     copy_vtk_voxels(run_vtk(reader.Get(), messages, path), image, path);
   } else if (header.format == "metaimage") {
-    auto reader = Ptr<vtkMetaImageReader>::New();
+    auto reader = Ptr<vtkMetaImageReader>::Take(
+        vtk_new_on_demand<vtkMetaImageReader>(vtk_io_image_library, "_ZN18vtkMetaImageReader3NewEv", path, "label map"));
     copy_vtk_voxels(run_vtk(reader.Get(), messages, path), image, path);
   } else if (header.format == "vti") {
     auto reader = Ptr<vtkXMLImageDataReader>::New();
     copy_vtk_voxels(run_vtk(reader.Get(), messages, path), image, path);
   } else {
-    auto reader = Ptr<vtkNIFTIImageReader>::New();
+    auto reader = Ptr<vtkNIFTIImageReader>::Take(
+        vtk_new_on_demand<vtkNIFTIImageReader>(vtk_io_image_library, "_ZN19vtkNIFTIImageReader3NewEv", path, "label map"));
     vtkImageData* out = run_vtk(reader.Get(), messages, path);
     copy_vtk_voxels(out, image, path);
     nifti_geometry(reader.Get(), out, image, path);

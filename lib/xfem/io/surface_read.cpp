@@ -24,6 +24,7 @@
 #include "xfem/io/gmsh_io.h"
 #include "xfem/io/vtk_io.h"
 #include "xfem/io/vtk_io_detail.h"
+#include "xfem/io/vtk_on_demand.h"
 #include "xfem/io/vtk_xml_check.h"
 
 namespace xfem {
@@ -195,7 +196,8 @@ TriangleMesh read_triangle_mesh(const std::string& path, std::vector<std::string
       mesh = from_grid(read_unstructured_grid(path, messages), path);
     } else if (ext == ".stl") {
       check_stl(path);
-      auto reader = Ptr<vtkSTLReader>::New();
+      auto reader = Ptr<vtkSTLReader>::Take(vtk_new_on_demand<vtkSTLReader>(  // not linked: vtk_on_demand.h
+          vtk_io_geometry_library, "_ZN12vtkSTLReader3NewEv", path, what));
       reader->SetFileName(path.c_str());
       reader->MergingOn();  // STL repeats each vertex in every facet; merge exact duplicates
       update_or_throw(reader.Get(), messages, path, what);

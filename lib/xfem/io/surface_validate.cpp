@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // validate_triangle_mesh: the checks and repairs (zero-area triangles, orientation) of a cut surface.
 #include <algorithm>
-#include <map>
+#include <cstdint>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -57,17 +57,34 @@ void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::ve
 
   // Orientation: two triangles sharing an edge agree when they run along it in opposite
   // directions. Breadth-first from the lowest-numbered triangle of each piece, flipping as needed.
+  // The edges by sorting (undirected edge, face) pairs, not by a map of vectors: a cut of thousands
+  // of triangles is read by every stage, and the map's allocations were a visible part of it.
   const int nf = static_cast<int>(mesh.triangles.rows());
-  std::map<std::pair<int, int>, std::vector<int>> edge_faces;  // undirected edge -> faces
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+  };
+  std::vector<std::pair<std::uint64_t, int>> edges;  // (undirected edge, face), by edge then face
+  edges.reserve(3 * static_cast<std::size_t>(nf));
   for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
-      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
-    }
-  for (const auto& [edge, faces] : edge_faces)
-    if (faces.size() > 2)
-      throw Error(name + ": edge (" + std::to_string(edge.first) + ", " + std::to_string(edge.second) +
-                  ") is shared by " + std::to_string(faces.size()) + " triangles; a cut must be a manifold surface");
+    for (int k = 0; k < 3; ++k) edges.emplace_back(key(mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)), f);
+  std::sort(edges.begin(), edges.end());
+  // across[3 f + k]: the other face on f's edge k (from vertex k to k + 1), or -1 on the boundary.
+  std::vector<int> across(3 * static_cast<std::size_t>(nf), -1);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+    if (j - i > 2)
+      throw Error(name + ": edge (" + std::to_string(edges[i].first >> 32) + ", " +
+                  std::to_string(edges[i].first & 0xffffffffu) + ") is shared by " + std::to_string(j - i) +
+                  " triangles; a cut must be a manifold surface");
+    if (j - i == 2)
+      for (std::size_t e = i; e < j; ++e) {
+        const int f = edges[e].second, g = edges[i + j - 1 - e].second;
+        for (int k = 0; k < 3; ++k)
+          if (key(mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)) == edges[i].first) across[3 * f + k] = g;
+      }
+    i = j;
+  }
   auto runs_forward = [&](int f, int a, int b) {  // does triangle f traverse a -> b?
     for (int k = 0; k < 3; ++k)
       if (mesh.triangles(f, k) == a && mesh.triangles(f, (k + 1) % 3) == b) return true;
@@ -86,8 +103,9 @@ void validate_triangle_mesh(TriangleMesh& mesh, const std::string& name, std::ve
       for (int k = 0; k < 3; ++k) {
         int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
         if (flip[f]) std::swap(a, b);  // f's direction along the edge after its own flip
-        for (int g : edge_faces[{std::min(a, b), std::max(a, b)}]) {
-          if (g == f) continue;
+        {
+          const int g = across[3 * f + k];
+          if (g < 0 || g == f) continue;
           const int needed = runs_forward(g, a, b) ? 1 : 0;  // g must run b -> a
           if (flip[g] == -1) {
             flip[g] = needed;
