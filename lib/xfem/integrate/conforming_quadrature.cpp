@@ -24,9 +24,9 @@ constexpr double kOnFront = 1e-6;
 // without a vertex on the front (blending elements, pieces of completely cut ones) is split only
 // while the front is nearer than kNearFar times its longest edge, at most kMaxLevelsFar times: its
 // integrand is bounded, and splitting every tet within one size of the front costs 20x the points.
+// (kNearFar is TetRuleLayout::far_split_ratio's default.)
 constexpr double kNear = 1.0;
 constexpr int kMaxLevels = 8;
-constexpr double kNearFar = 0.5;
 constexpr int kMaxLevelsFar = 8;
 
 }  // namespace
@@ -269,7 +269,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         best = e;
       }
     }
-    if (level < layout.far_levels && nearest < kNearFar * longest) {
+    if (level < layout.far_levels && nearest < layout.far_split_ratio * longest) {
       for (int e = 0; e < 6; ++e)
         if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
     }

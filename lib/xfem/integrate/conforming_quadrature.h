@@ -90,6 +90,9 @@ struct TetRuleLayout {
   double remote_ratio = 1e300;
   int near_levels = 1;  ///< bisection levels at most, pieces with a vertex on the front
   int far_levels = 0;   ///< ... without one
+  /// A piece without a vertex on the front is bisected (up to far_levels) while the front is nearer
+  /// than far_split_ratio times its longest edge.
+  double far_split_ratio = 0.5;
   bool far_squared = true;  ///< pieces without a vertex on the front: s = sigma^2 (true) or sigma (append_edge_rule)
   /// Remote pieces (beyond remote_ratio): the symmetric rule of `remote` points (4 or 14,
   /// append_symmetric_tet_rule) instead of the collapsed remote^3 rule: there the integrand is
