@@ -22,6 +22,8 @@
 //         layout:radial,along,across,far,distant,distant_ratio,near_levels,far_levels[,consistent[,far_squared
 //                [,remote,remote_ratio[,remote_symmetric[,far_split_ratio]]]]] (consistent: the order whose consistent shift is taken, faces
 //                consistent_face_points(consistent) per direction)
+//   RULE@N: the same with N points per direction on the faces the front passes near (an experiment:
+//         branch_gradient_integrals' near_order), e.g. order:3@5.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -45,11 +47,15 @@ struct Rule {
   std::string name;
   xfem::TetRuleLayout layout;
   int consistent = 3;  // Gauss points per direction of the face integrals
+  int near_faces = 0;  // points per direction on the faces near the front (0: as the others)
 };
 
-Rule parse(const std::string& s) {
+Rule parse(const std::string& full) {
   Rule r;
-  r.name = s;
+  r.name = full;
+  const std::size_t at = full.find('@');
+  const std::string s = full.substr(0, at);
+  if (at != std::string::npos) r.near_faces = std::stoi(full.substr(at + 1));
   if (s.rfind("uniform:", 0) == 0) {
     const int n = std::stoi(s.substr(8));
     r.layout = xfem::TetRuleLayout::uniform(n);
@@ -198,7 +204,7 @@ int main(int argc, char** argv) {
       const Rule& r = r_ref;
       for (std::size_t i = 0; i < tets.size(); ++i) {
         xfem::conforming_rule(em, splits, tets[i], r.layout, points);
-        xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, r.consistent);
+        xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, r.consistent, nullptr, r.near_faces);
         ref[i] = branch_block(em, tets[i], k);
       }
       if (!reference_file.empty()) {
@@ -234,7 +240,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         for (std::size_t i = 0; i < tets.size(); ++i) {
           xfem::conforming_rule(em, splits, tets[i], rules[r].layout, points);
-          xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, rules[r].consistent, &faces);
+          xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, rules[r].consistent, &faces,
+                                      rules[r].near_faces);
           if (run == 0) {
             const Eigen::MatrixXd b = branch_block(em, tets[i], k);
             err.push_back((b - ref[i]).norm() / ref[i].norm());
@@ -259,6 +266,7 @@ int main(int argc, char** argv) {
       Rule parts[4] = {base, base, base, base};
       parts[0].layout = front_from(base.layout, r_ref.layout);
       parts[1].consistent = r_ref.consistent;
+      parts[1].near_faces = parts[3].near_faces = 0;
       parts[2].layout = away_from(base.layout, r_ref.layout);
       parts[3].layout = away_from(front_from(base.layout, r_ref.layout), r_ref.layout);
       parts[3].consistent = r_ref.consistent;
@@ -281,7 +289,8 @@ int main(int argc, char** argv) {
         double e[5] = {errors[0][i], 0, 0, 0, 0};
         for (int p = 0; p < 4; ++p) {
           xfem::conforming_rule(em, splits, t, parts[p].layout, points);
-          xfem::closed_form_stiffness(em, splits, t, points, material, k, parts[p].consistent);
+          xfem::closed_form_stiffness(em, splits, t, points, material, k, parts[p].consistent, nullptr,
+                                      parts[p].near_faces);
           e[p + 1] = (branch_block(em, t, k) - ref[i]).norm() / ref[i].norm();
         }
         std::printf("%8d %5d %5d %5d %7d %10.3e %10.3e %10.3e %10.3e %10.3e\n", t, kinds[0], kinds[1], kinds[2],

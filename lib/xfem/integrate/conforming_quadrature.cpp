@@ -327,7 +327,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 }
 
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
-                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients) {
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
   gradients.resize(q, 3 * n);
@@ -353,7 +353,7 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache, near_face_points);
     const double volume = w.sum();
     for (int c = 0; c < n; ++c) {
       if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;

@@ -168,8 +168,10 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 /// consistent_order > 0 the branch functions' gradients shifted as element_stiffness_at_points
 /// says (the shift of the rule of that order: consistent_face_points(consistent_order) per direction). What every element quantity integrated on the rule is built from: the linear stiffness
 /// below, the nonlinear forces and tangent (element_forces.h).
+/// `near_face_points` > 0: the faces the front passes near get that many points per direction
+/// (branch_gradient_integrals' near_order; an experiment, bench/branch_rule_accuracy).
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
-                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients);
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points = 0);
 
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as
