@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Organ S's pipeline stage by stage, two (or more) builds side by side (issue 35, fifth part).
+"""Organ S's pipeline stage by stage, two (or more) builds side by side (issue 35, sixth part).
 
 Each round runs, for every build in turn (the order alternates from round to round), the whole
 pipeline in that build's own directory:

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Start-up (issue 35, fifth part): the pipeline's tools do not link VTK's vtkIOGeometry (STL) or
+# Start-up (issue 35, sixth part): the pipeline's tools do not link VTK's vtkIOGeometry (STL) or
 # vtkIOImage (label maps), ~24 and ~12 shared libraries more; they load them on the first .stl cut
 # or label map (io/vtk_on_demand.h). Both inputs still work through the tools, byte for byte the
 # same as the same surface given as .off.

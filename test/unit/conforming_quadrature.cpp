@@ -156,6 +156,19 @@ TEST_CASE("conforming_quadrature: the rule of order n lays out its points by the
   // Near (0.5 from the tet, longest edge sqrt 2) and far (5 away) without touching it.
   CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-0.5, 0, -1}, {-0.5, 0, 2}, {1, 0, 0}}})) == 64);
   CHECK(points(xfem::CrackFront({xfem::FrontSegment{{-5, 0, -1}, {-5, 0, 2}, {1, 0, 0}}})) == 8);
+  // far_split_ratio: a piece off the front is bisected (far_levels) only while the front is nearer
+  // than that ratio times its longest edge (sqrt 2 here; the front 0.5 away).
+  const xfem::CrackFront near_front({xfem::FrontSegment{{-0.5, 0, -1}, {-0.5, 0, 2}, {1, 0, 0}}});
+  xfem::TetRuleLayout split = l;
+  split.far_levels = 1;
+  CHECK(split.far_split_ratio == 0.5);
+  xfem::PointRule halves, whole;
+  xfem::append_tet_rule({o, ex, ey, ez}, near_front, split, 1, halves);  // 0.5 < 0.5 sqrt 2: bisected
+  split.far_split_ratio = 0.3;                                           // 0.5 > 0.3 sqrt 2: not
+  xfem::append_tet_rule({o, ex, ey, ez}, near_front, split, 1, whole);
+  CHECK(halves.size() == 128);
+  CHECK(whole.size() == 64);
+  CHECK(sum(halves.weights) == Approx(volume).epsilon(1e-13));
 }
 
 TEST_CASE("conforming_quadrature: 1/r to a front through an edge or a vertex converges to the closed form",

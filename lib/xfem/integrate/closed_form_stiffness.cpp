@@ -15,7 +15,7 @@ namespace xfem {
 
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
-                           FaceIntegralCache* face_cache) {
+                           FaceIntegralCache* face_cache, int near_face_points) {
   const int n = em.size(t);
   const long base = em.offsets[t];
   const long first_branch = em.np + em.ns;
@@ -48,7 +48,7 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
 
   if (nb > 0) {
     Eigen::MatrixXd G;
-    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, G);
+    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, G, near_face_points);
     const int q = branch_rule.size();
     Eigen::MatrixXd B(q, nb);      // sqrt(w_p) b_p
     Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(R, nb);  // row r: sum over p in r of w_p b_p

@@ -30,10 +30,10 @@ class FaceIntegralCache;  // consistent_gradients.h
 /// `branch_rule`: the points of the branch functions (conforming_rule, or any rule whose points
 /// carry the side codes of the pieces they lie in; side 0 in a tet no cut meets); ignored, and may
 /// be empty, when the tet has no branch DOFs. `consistent_order`, `face_cache` as for
-/// element_stiffness_at_points (conforming_quadrature.h). Throws xfem::Error if a point's side is
+/// element_stiffness_at_points (conforming_quadrature.h); `near_face_points` as for sampled_gradients. Throws xfem::Error if a point's side is
 /// not one of the tet's regions.
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
-                           FaceIntegralCache* face_cache = nullptr);
+                           FaceIntegralCache* face_cache = nullptr, int near_face_points = 0);
 
 }  // namespace xfem

@@ -24,9 +24,9 @@ constexpr double kOnFront = 1e-6;
 // without a vertex on the front (blending elements, pieces of completely cut ones) is split only
 // while the front is nearer than kNearFar times its longest edge, at most kMaxLevelsFar times: its
 // integrand is bounded, and splitting every tet within one size of the front costs 20x the points.
+// (kNearFar is TetRuleLayout::far_split_ratio's default.)
 constexpr double kNear = 1.0;
 constexpr int kMaxLevels = 8;
-constexpr double kNearFar = 0.5;
 constexpr int kMaxLevelsFar = 8;
 
 }  // namespace
@@ -269,7 +269,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         best = e;
       }
     }
-    if (level < layout.far_levels && nearest < kNearFar * longest) {
+    if (level < layout.far_levels && nearest < layout.far_split_ratio * longest) {
       for (int e = 0; e < 6; ++e)
         if ((p[kEdges[e][0]] - p[kEdges[e][1]]).norm() == longest) return bisect(kEdges[e][0], kEdges[e][1]);
     }
@@ -327,7 +327,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 }
 
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
-                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients) {
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
   gradients.resize(q, 3 * n);
@@ -353,7 +353,7 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache, near_face_points);
     const double volume = w.sum();
     for (int c = 0; c < n; ++c) {
       if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;

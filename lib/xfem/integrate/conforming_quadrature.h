@@ -90,6 +90,9 @@ struct TetRuleLayout {
   double remote_ratio = 1e300;
   int near_levels = 1;  ///< bisection levels at most, pieces with a vertex on the front
   int far_levels = 0;   ///< ... without one
+  /// A piece without a vertex on the front is bisected (up to far_levels) while the front is nearer
+  /// than far_split_ratio times its longest edge.
+  double far_split_ratio = 0.5;
   bool far_squared = true;  ///< pieces without a vertex on the front: s = sigma^2 (true) or sigma (append_edge_rule)
   /// Remote pieces (beyond remote_ratio): the symmetric rule of `remote` points (4 or 14,
   /// append_symmetric_tet_rule) instead of the collapsed remote^3 rule: there the integrand is
@@ -165,8 +168,10 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 /// consistent_order > 0 the branch functions' gradients shifted as element_stiffness_at_points
 /// says (the shift of the rule of that order: consistent_face_points(consistent_order) per direction). What every element quantity integrated on the rule is built from: the linear stiffness
 /// below, the nonlinear forces and tangent (element_forces.h).
+/// `near_face_points` > 0: the faces the front passes near get that many points per direction
+/// (branch_gradient_integrals' near_order; an experiment, bench/branch_rule_accuracy).
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
-                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients);
+                       FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points = 0);
 
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as

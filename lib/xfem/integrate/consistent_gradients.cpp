@@ -83,7 +83,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
 }  // namespace
 
 Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
-                                                                   FaceIntegralCache* cache) {
+                                                                   FaceIntegralCache* cache, int near_order) {
   const int n = em.size(t);
   const long begin = em.offsets[t];
   Eigen::Matrix<double, Eigen::Dynamic, 3> out = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
@@ -104,6 +104,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
   gauss_legendre_01(order, nodes, weights);
   // Subdivision near the front pays only for accurate rules (as the volume rule's bisection).
   const int depth = std::max(0, order - 3);
+  std::vector<double> near_nodes, near_weights;
+  if (near_order > order) gauss_legendre_01(near_order, near_nodes, near_weights);
+  const int near_depth = std::max(0, near_order - 3);
   std::array<Eigen::Vector3d, 4> corner;
   std::array<long, 4> id;
   for (int c = 0; c < 4; ++c) {
@@ -144,7 +147,15 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
       if (found != cache->faces.end()) face = &found->second;
     }
     if (!face) {
-      computed.integral = face_integrals(cut, front, fronts, meeting, A, B, C, normal, depth, nodes, weights);
+      // The face alone decides whether the front passes near it (both tets agree).
+      bool near = false;
+      if (near_order > order && !front.empty()) {
+        const double longest = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+        near = front.distance((A + B + C) / 3.0) < longest;
+      }
+      computed.integral = near ? face_integrals(cut, front, fronts, meeting, A, B, C, normal, near_depth, near_nodes,
+                                                near_weights)
+                               : face_integrals(cut, front, fronts, meeting, A, B, C, normal, depth, nodes, weights);
       face = &computed;
       if (cache) face = &(cache->faces[key] = computed);
     }

@@ -57,7 +57,12 @@ class FaceIntegralCache {
 /// Returns |C| x 3 (rows in the order of the tet's C); rows of DOFs other than branch DOFs are 0.
 /// `order`: Gauss points per direction on each face triangle (order^2 points per triangle).
 /// `cache` (optional): face integrals shared with the tet's neighbours (FaceIntegralCache).
+/// `near_order` > order (an experiment of issue 35, not used by the default): that many points per
+/// direction instead on the faces the front passes near (closer to the face's centroid than its
+/// longest edge), where F ~ sqrt(r) is nearly singular; decided by the face alone, so both tets of a
+/// face agree. (The cut loads' face points, cut_face_points, do not follow it.)
 Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
-                                                                   FaceIntegralCache* cache = nullptr);
+                                                                   FaceIntegralCache* cache = nullptr,
+                                                                   int near_order = 0);
 
 }  // namespace xfem
