@@ -59,13 +59,10 @@ bool check_solve_options(SolveOptions& o) {
   cli::check_output(o.output, {".mtx"}, true);
   if (!o.report_path.empty()) cli::check_output(o.report_path, {".json"}, true);
   if (!o.contact_pressure_path.empty()) cli::check_output(o.contact_pressure_path, {".mtx"}, true);
-  // Contact is iterated on CHOLMOD factorizations (contact_solve.h).
+  // Contact is iterated on either backend (contact_solve.h: PenalisedSolver).
   const bool with_contact = has_contact_operator(o.dir);
-  if (with_contact && o.backend == "petsc")
-    throw Error(o.dir + ": contact between the cut's faces is solved by the cholmod backend only (give --backend cholmod)");
   if (!with_contact && !o.contact_pressure_path.empty())
     throw Error(o.dir + ": --contact-pressure: the system has no contact operator (problem.json \"contact\" is off)");
-  if (with_contact) o.backend = "cholmod";
   return with_contact;
 }
 
