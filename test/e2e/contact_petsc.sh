@@ -91,10 +91,11 @@ solve closed-petsc closed --backend petsc --rtol 1e-12
 compare "plane crack pressed closed, PETSc on 1 process" closed-cholmod closed-petsc -0.005
 solve closed-petsc2 closed --backend petsc --np 2 --rtol 1e-12
 compare "plane crack pressed closed, PETSc on 2 processes" closed-cholmod closed-petsc2 -0.005
-# From a binary system (xfem-assemble's default) too: every rank reads K whole for the iteration.
+# From a binary system (xfem-assemble's default) too, every rank reading K whole for the iteration;
+# --backend auto (the default) with --np 2 chooses PETSc.
 "$B/xfem-assemble" -q enriched.vtu --cut plane.vtp --problem hydro.json -o closed-bin || fail "assemble binary"
-solve closed-bin-petsc closed-bin --backend petsc --np 2 --rtol 1e-12
-compare "plane crack pressed closed, binary system, PETSc on 2 processes" closed-cholmod closed-bin-petsc -0.005
+solve closed-bin-petsc closed-bin --np 2 --rtol 1e-12
+compare "plane crack pressed closed, binary system, auto backend on 2 processes" closed-cholmod closed-bin-petsc -0.005
 
 # 2. The beam cut through and pulled (the golden X-FEM beam's inputs) with contact: the cut opens.
 "$B/xfem-mesh" -q unstructured-box --hi 0.03 0.06 0.2 --size 0.02 -o open.vtu || fail "open mesh"

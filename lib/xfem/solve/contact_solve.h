@@ -16,12 +16,12 @@ namespace xfem {
 /// Settings of the contact iteration (xfem-solve --contact-tol, --contact-iterations).
 struct ContactIteration {
   double tolerance = 0.0;  ///< largest penetration accepted, metres; 0: 1e-8 max |u| of the solve without contact
-  int max_solves = 100;    ///< factorizations at most (a refused run says how far it got)
+  int max_solves = 100;    ///< linear solves (CHOLMOD: factorizations) at most (a refused run says how far it got)
 };
 
 /// What the contact iteration did (xfem-solve's report, "contact").
 struct ContactOutcome {
-  int solves = 0;                  ///< factorizations (the first one is the solve without contact)
+  int solves = 0;                  ///< linear solves (the first one is the solve without contact)
   int damped = 0;                  ///< Newton steps shortened by the line search
   int updates = 0;                 ///< multiplier (Uzawa) updates
   long active = 0;                 ///< contact nodes (conditions) in contact at the end

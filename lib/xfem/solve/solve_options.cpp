@@ -49,7 +49,7 @@ void add_solve_options(CLI::App& app, SolveOptions& o) {
   app.add_option("--contact-tol", o.contact.tolerance, "contact (a system assembled with \"contact\"): the largest "
                  "penetration of the cut's faces accepted, m (default: 1e-8 max |u|); with \"friction\" also the largest "
                  "slip of a sticking node and the friction multipliers' error, in m")->check(cli::positive());
-  app.add_option("--contact-iterations", o.contact.max_solves, "contact: factorizations at most (default 100)")
+  app.add_option("--contact-iterations", o.contact.max_solves, "contact: linear solves (CHOLMOD: factorizations) at most (default 100)")
       ->check(cli::range(2, 100000));
   app.add_option("--contact-pressure", o.contact_pressure_path, "contact: also write the contact pressure of each "
                  "contact node (Matrix Market, NP x cuts, Pa; docs/FORMATS.md) for xfem-visualize --contact-pressure");
