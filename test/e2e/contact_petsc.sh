@@ -190,11 +190,17 @@ for case, petsc in (('pressed', 'pressed-petsc'), ('pressed', 'pressed-petsc2'),
 assert cost['pressed-petsc'] <= 2 * cost['pulled-petsc'], "the penalty made CG slower"
 PY
 
-# Friction stays frictionless-only in xfem-newton, on either backend (one line, nothing written).
+# Bad input, one line and nothing written: friction in xfem-newton (frictionless only, on either
+# backend), an unknown --enriched-block.
 sed 's/"contact": true/"contact": {"friction": 0.3}/' pressed.json > newton-friction.json
 "$B/xfem-newton" -q box.enriched.vtu --cut crack.vtp --problem newton-friction.json -o bad.mtx --backend petsc --np 1 2> err \
   && fail "xfem-newton accepted friction"
 [ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-newton: error: newton-friction.json: xfem-newton solves frictionless contact" err \
+  || fail "message: $(cat err)"
+[ ! -e bad.mtx ] || fail "output left behind"
+"$B/xfem-newton" -q box.enriched.vtu --cut crack.vtp --problem pressed.json -o bad.mtx --backend petsc \
+  --enriched-block bogus 2> err && fail "xfem-newton accepted --enriched-block bogus"
+[ "$(wc -l < err)" -eq 1 ] && grep -q "^xfem-newton: usage error: --enriched-block: bogus not in {auto,direct,gamg}" err \
   || fail "message: $(cat err)"
 [ ! -e bad.mtx ] || fail "output left behind"
 echo "PASS"
