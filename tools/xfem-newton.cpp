@@ -72,6 +72,11 @@ int main(int argc, char** argv) {
   app.add_option("--cg-rtol", cg.rtol, "PETSc: each linear solve's relative residual (default 1e-10; Newton's own "
                                        "--rtol decides convergence)")
       ->check(xfem::cli::range(1e-15, 1e-2));
+  cg.enriched_block = "auto";  // the field split on cut meshes, as xfem-solve (contact's penalty needs it)
+  app.add_option("--enriched-block", cg.enriched_block, "PETSc: the enriched DOFs' preconditioner, as xfem-solve's: "
+                 "direct (their block factorized), gamg (one GAMG on the whole tangent) or auto (default: direct "
+                 "when the mesh has enriched DOFs)")
+      ->check(CLI::IsMember({"auto", "direct", "gamg"}));
   app.add_option("--contact-tol", run.contact.tolerance, "contact (problem.json \"contact\"): the largest penetration "
                  "accepted at each load step, metres (default 1e-8 of max |u| at that step)")
       ->check(CLI::PositiveNumber);
@@ -98,11 +103,6 @@ int main(int argc, char** argv) {
       if (!problem.contact.on)
         throw xfem::Error(problem_path + ": --contact-pressure: problem.json has no \"contact\"");
     }
-    // Contact is iterated on CHOLMOD factorizations (its tangent's pattern grows by G^T G).
-    if (problem.contact.on && backend == "petsc")
-      throw xfem::Error(problem_path + ": contact between the cut's faces is solved by the cholmod backend only (give "
-                        "--backend cholmod)");
-    if (problem.contact.on) backend = "cholmod";
     const xfem::EnrichedMesh em = xfem::read_enriched_mesh_to_solve(input, cut_paths);
     // Each tet's law (problem.json `materials`, checked against the mesh's regions); none: one law.
     const xfem::TetMaterials materials = xfem::tet_materials(problem, em.mesh, input);

@@ -63,13 +63,15 @@ int main(int argc, char** argv) {
     const auto warn = [&](const std::string& m) { if (root) xfem::cli::warn(m); };
 
     const double t_read = xfem::cli::now();
-    // The PETSc backend loads K from a binary system itself, each rank only its rows (petsc_backend.h).
-    const bool distributed_load = o.backend == "petsc" && xfem::system_format(o.dir) == xfem::SystemFormat::Petsc;
+    // The PETSc backend loads K from a binary system itself, each rank only its rows (petsc_backend.h);
+    // with contact every rank iterates on the whole K (contact_solve.h).
+    const bool distributed_load =
+        o.backend == "petsc" && !with_contact && xfem::system_format(o.dir) == xfem::SystemFormat::Petsc;
     xfem::LinearSystem s = xfem::read_linear_system(o.dir, !distributed_load);
     long nonzeros = (s.K.nonZeros() + s.K.rows()) / 2;  // stored triangle (K is symmetric)
 #if XFEM_SOLVE_LINKS_PETSC
     xfem::PetscMatrix distributed;
-    if (o.backend == "petsc") distributed = xfem::distribute_system_matrix(o.dir, s, &nonzeros);
+    if (o.backend == "petsc" && !with_contact) distributed = xfem::distribute_system_matrix(o.dir, s, &nonzeros);
 #endif
     info(o.dir + ": N = " + std::to_string(s.n) + " (NP " + std::to_string(s.np) + ", NS " + std::to_string(s.ns) +
          ", NB " + std::to_string(s.nb) + "), " + std::to_string(3 * s.n) + " DOFs, " + std::to_string(nonzeros) +
@@ -92,17 +94,27 @@ int main(int argc, char** argv) {
     double residual = 0;
     xfem::ContactOperator contact;
     xfem::ContactOutcome touching;
+    const xfem::PetscSolveOptions petsc_options{o.rtol, o.max_iterations, o.near_null, o.enriched_block, {}};
     if (with_contact) {
       contact = xfem::read_contact_operator(o.dir, 3 * s.n);
+      std::unique_ptr<xfem::PenalisedSolver> solver;
+      if (o.backend == "cholmod") solver = std::make_unique<xfem::CholmodPenalisedSolver>(o.ordering, !tool->quiet);
+#if XFEM_SOLVE_LINKS_PETSC
+      else solver = std::make_unique<xfem::PetscPenalisedSolver>(petsc_options, root, tool->verbose, root && !tool->quiet);
+#endif
       u = contact.has_friction()  // problem.json "contact": {"friction": mu}: Coulomb friction between the faces
-              ? xfem::solve_with_friction(s, contact, o.contact, o.ordering, !tool->quiet, report, &residual, &touching)
-              : xfem::solve_with_contact(s, contact, o.contact, o.ordering, !tool->quiet, report, &residual, &touching);
+              ? xfem::solve_with_friction(s, contact, o.contact, *solver, report, &residual, &touching)
+              : xfem::solve_with_contact(s, contact, o.contact, *solver, report, &residual, &touching);
+#if XFEM_SOLVE_LINKS_PETSC
+      if (o.backend == "petsc")
+        report["contact"]["cg_iterations"] = static_cast<const xfem::PetscPenalisedSolver&>(*solver).iterations();
+#endif
     }
     else if (o.backend == "cholmod") u = xfem::solve_with_cholmod(s, o.ordering, !tool->quiet, report, &residual);
 #if XFEM_SOLVE_LINKS_PETSC
     else
-      u = xfem::solve_with_petsc(std::move(distributed), s, {o.rtol, o.max_iterations, o.near_null, o.enriched_block, {}}, root,
-                                 tool->verbose, root && !tool->quiet, report, &residual);
+      u = xfem::solve_with_petsc(std::move(distributed), s, petsc_options, root, tool->verbose, root && !tool->quiet,
+                                 report, &residual);
 #endif
     info("relative residual ||K u - f|| / ||f|| on the free DOFs: " + three_digits(residual));
     report["relative_residual"] = residual;
@@ -111,6 +123,6 @@ int main(int argc, char** argv) {
       throw xfem::Error("the solution is inaccurate (relative residual " + three_digits(residual) +
                         "): K is numerically singular; no output written");
     if (root) xfem::write_solution(o.dir, s, distributed_load, u, o.output, o.reactions_path, report, o.report_path);
-    if (!o.contact_pressure_path.empty()) xfem::write_contact_pressure(contact, touching.pressure, s.np, o.contact_pressure_path);
+    if (root && !o.contact_pressure_path.empty()) xfem::write_contact_pressure(contact, touching.pressure, s.np, o.contact_pressure_path);
   });
 }

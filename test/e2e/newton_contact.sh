@@ -138,8 +138,6 @@ bad() {  # $1: what, $2: expected message (grep -E), the rest: xfem-newton's arg
   [ "$(wc -l < err)" -eq 1 ] && grep -qE "^xfem-newton: error: $message" err || fail "$what: message: $(cat err)"
   [ ! -e bad.mtx ] || fail "$what: output left behind"
 }
-bad "contact with PETSc" "pressed.json: contact between the cut's faces is solved by the cholmod backend only" \
-  enriched.vtu --cut crack.vtp --problem pressed.json --backend petsc
 bad "--contact-pressure without contact" "opened-off.json: --contact-pressure: problem.json has no \"contact\"" \
   enriched.vtu --cut crack.vtp --problem opened-off.json --contact-pressure p.mtx
 sed 's/"contact": true/"contact": {"friction": 0.3}/' pressed.json > friction.json

@@ -184,7 +184,8 @@ Eigen::VectorXd contact_solve(const xfem::EnrichedMesh& em, const xfem::Problem&
   xfem::Json report;
   double residual = 0;
   if (without) *without = xfem::solve_with_cholmod(s, "amd", false, report, &residual);
-  const Eigen::VectorXd u = xfem::solve_with_contact(s, c, {}, "amd", false, report, &residual, &out);
+  xfem::CholmodPenalisedSolver solver("amd", false);
+  const Eigen::VectorXd u = xfem::solve_with_contact(s, c, {}, solver, report, &residual, &out);
   CHECK(residual < 1e-10);
   CHECK(report["contact"]["points"] == c.points());
   return u;

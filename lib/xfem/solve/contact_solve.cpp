@@ -25,7 +25,7 @@ constexpr int kInnerSolves = 10;
 // taken when the active set did not change), else its root by bisection. d is zero on the fixed
 // DOFs (u and u + d both satisfy the Dirichlet conditions), so their reactions do not enter.
 double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen::VectorXd& lambda,
-                   const Eigen::VectorXd& u, const Eigen::VectorXd& g, const Eigen::VectorXd& d) {
+                   const Eigen::VectorXd& u, const Eigen::VectorXd& g, const Eigen::VectorXd& d, double slack) {
   const Eigen::VectorXd Kd = s.K * d, h = c.G * d;
   const double slope = d.dot(s.K * u - s.f), curvature = d.dot(Kd);
   const auto derivative = [&](double alpha) {
@@ -34,7 +34,7 @@ double line_search(const LinearSystem& s, const ContactOperator& c, const Eigen:
       value -= c.weight[i] * h[i] * std::max(0.0, lambda[i] - c.penalty[i] * (g[i] + alpha * h[i]));
     return value;
   };
-  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature));
+  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature), slack);
 }
 
 }  // namespace
@@ -52,23 +52,34 @@ SparseMatrix contact_pattern(const SparseMatrix& K, const SparseMatrix& G) {
   return P;
 }
 
-Eigen::VectorXd solve_penalised(const LinearSystem& s, const SparseMatrix& K, const Eigen::VectorXd& f,
-                                const std::string& ordering, const char* what, std::unique_ptr<CholeskyFactor>& factor,
-                                ReducedSystem& reduced) {
-  reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
-  if (!factor)
-    factor = std::make_unique<CholeskyFactor>(reduced.K, ordering == "amd" ? Ordering::Amd : Ordering::Metis);
-  else
-    factor->refactor(reduced.K);
-  if (factor->rcond < 1e-14)
-    cli::warn(std::string(what) + ": K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
-              cli::three_digits(factor->rcond) + "): lower the contact penalty");
-  return expand_solution(reduced, factor->solve(reduced.f), s.fixed, s.fixed_values);
+Eigen::VectorXd CholmodPenalisedSolver::solve_unpenalised(const LinearSystem& s, Json& report, double* residual) {
+  return solve_with_cholmod(s, ordering_, ticking_, report, residual);
 }
 
-double convex_step_length(const std::function<double(double)>& derivative, double size) {
+Eigen::VectorXd CholmodPenalisedSolver::solve(const LinearSystem& s, const SparseMatrix& K, const Eigen::VectorXd& f,
+                                              const char* what, double* residual) {
+  const ReducedSystem reduced = eliminate_dirichlet(K, f, s.fixed, s.fixed_values);
+  if (!factor_)
+    factor_ = std::make_unique<CholeskyFactor>(reduced.K, ordering_ == "amd" ? Ordering::Amd : Ordering::Metis);
+  else
+    factor_->refactor(reduced.K);
+  if (factor_->rcond < 1e-14)
+    cli::warn(std::string(what) + ": K with the penalty is near-singular (CHOLMOD reciprocal condition estimate " +
+              cli::three_digits(factor_->rcond) + "): lower the contact penalty");
+  Eigen::VectorXd u = expand_solution(reduced, factor_->solve(reduced.f), s.fixed, s.fixed_values);
+  *residual = relative_residual(K, f, u, reduced);
+  return u;
+}
+
+double penalised_step_slack(const PenalisedSolver& solver, const SparseMatrix& K, const Eigen::VectorXd& f,
+                            const Eigen::VectorXd& u, const Eigen::VectorXd& x) {
+  if (!solver.iterative()) return 0.0;
+  return std::abs((x - u).dot(K * x - f));
+}
+
+double convex_step_length(const std::function<double(double)>& derivative, double size, double slack) {
   // Round-off: the full step's derivative is zero up to the size of its terms.
-  if (derivative(1.0) <= 1e-9 * size) return 1.0;
+  if (derivative(1.0) <= 1e-9 * size + slack) return 1.0;
   double lo = 0, hi = 1;
   for (int k = 0; k < 60 && hi - lo > 1e-15; ++k) {
     const double mid = 0.5 * (lo + hi);
@@ -100,10 +111,10 @@ void report_contact(const ContactOperator& c, const ContactOutcome& out, Json& r
 }
 
 Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator& c, const ContactIteration& settings,
-                                   const std::string& ordering, bool ticking, Json& report, double* residual,
+                                   PenalisedSolver& solver, Json& report, double* residual,
                                    ContactOutcome* outcome) {
   using cli::three_digits;
-  Eigen::VectorXd u = solve_with_cholmod(s, ordering, ticking, report, residual);
+  Eigen::VectorXd u = solver.solve_unpenalised(s, report, residual);
   ContactOutcome out;
   out.solves = 1;
   const SparseMatrix& G = c.G;
@@ -134,7 +145,6 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
     const SparseMatrix Gt = c.G.transpose();
     cli::detail("contact: K has " + std::to_string(s.K.nonZeros()) + " non-zeros, with the contact nodes' couplings " +
                 std::to_string(pattern.nonZeros()));
-    std::unique_ptr<CholeskyFactor> factor;
     int inner = 0;
     update_active();
     Eigen::VectorXd stiffness(Q), force(Q);
@@ -153,15 +163,15 @@ Eigen::VectorXd solve_with_contact(const LinearSystem& s, const ContactOperator&
       if (K.nonZeros() != pattern.nonZeros())  // the penalty term lies inside G^T G's pattern: never
         throw Error("contact: the penalty term left the contact pattern (internal error)");
       const Eigen::VectorXd f = s.f + Gt * force;
-      ReducedSystem reduced;
-      const Eigen::VectorXd next = solve_penalised(s, K, f, ordering, "contact", factor, reduced);
+      double next_residual = 0;
+      const Eigen::VectorXd next = solver.solve(s, K, f, "contact", &next_residual);
       ++out.solves;
       // The Newton step next - u, damped where it would raise the energy of the fixed-lambda
       // problem (line_search): on a curved cut the undamped active-set steps cycle.
-      const double alpha = line_search(s, c, lambda, u, g, next - u);
+      const double alpha = line_search(s, c, lambda, u, g, next - u, penalised_step_slack(solver, K, f, u, next));
       if (alpha == 1.0) {
         u = next;
-        *residual = relative_residual(K, f, u, reduced);
+        *residual = next_residual;
       } else {
         u += alpha * (next - u);
         ++out.damped;

@@ -115,7 +115,8 @@ struct FrictionState {
 // multipliers: Pi is convex along d, its derivative
 //   Pi'(alpha) = d^T (K u - f) + alpha d^T K d - sum_i W_i h_i p_i(alpha) - sum_i W_i k_i . P_b(z_i(alpha))
 // (h = G d, k = T d) increasing: 1 when Pi'(1) <= 0, else its root by bisection.
-double line_search(const LinearSystem& s, const FrictionState& state, const Eigen::VectorXd& u, const Eigen::VectorXd& d) {
+double line_search(const LinearSystem& s, const FrictionState& state, const Eigen::VectorXd& u, const Eigen::VectorXd& d,
+                   double slack) {
   const ContactOperator& c = state.c;
   const Eigen::VectorXd h = c.G * d, k = c.T * d;
   const double slope = d.dot(s.K * u - s.f), curvature = d.dot(s.K * d);
@@ -128,17 +129,17 @@ double line_search(const LinearSystem& s, const FrictionState& state, const Eige
     }
     return value;
   };
-  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature));
+  return convex_step_length(derivative, std::abs(slope) + std::abs(curvature), slack);
 }
 
 }  // namespace
 
 Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator& c, const ContactIteration& settings,
-                                    const std::string& ordering, bool ticking, Json& report, double* residual,
+                                    PenalisedSolver& solver, Json& report, double* residual,
                                     ContactOutcome* outcome, FrictionOutcome* friction) {
   using cli::three_digits;
   if (!c.has_friction() || c.T.rows() != 2 * c.points()) throw Error("friction: the contact operator has no slip rows (internal error)");
-  Eigen::VectorXd u = solve_with_cholmod(s, ordering, ticking, report, residual);
+  Eigen::VectorXd u = solver.solve_unpenalised(s, report, residual);
   ContactOutcome out;
   out.solves = 1;
   const long Q = c.points();
@@ -152,7 +153,6 @@ Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator
     const SparseMatrix Gt = c.G.transpose(), Tt = c.T.transpose();
     cli::detail("friction: K has " + std::to_string(s.K.nonZeros()) + " non-zeros, with the contact nodes' couplings " +
                 std::to_string(pattern.nonZeros()));
-    std::unique_ptr<CholeskyFactor> factor;
     int inner = 0;
     state.update_sets();
     // The first contact solve glues the faces where they touch (every node in contact sticks, the
@@ -203,14 +203,14 @@ Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator
       if (K.nonZeros() != pattern.nonZeros())
         throw Error("friction: the penalty terms left the contact pattern (internal error)");
       const Eigen::VectorXd f = s.f + Gt * force + Tt * tangential_force;
-      ReducedSystem reduced;
-      const Eigen::VectorXd next = solve_penalised(s, K, f, ordering, "friction", factor, reduced);
+      double next_residual = 0;
+      const Eigen::VectorXd next = solver.solve(s, K, f, "friction", &next_residual);
       ++out.solves;
       const Eigen::VectorXd step = next - u;
-      const double alpha = line_search(s, state, u, step);
+      const double alpha = line_search(s, state, u, step, penalised_step_slack(solver, K, f, u, next));
       if (alpha == 1.0) {
         u = next;
-        *residual = relative_residual(K, f, u, reduced);
+        *residual = next_residual;
       } else {
         u += alpha * step;
         ++out.damped;

@@ -33,12 +33,12 @@ struct FrictionOutcome {
 /// is symmetric positive definite (the line search of contact_solve on Pi); then Uzawa updates
 /// lambda <- [lambda - kappa g]_+, l <- the projection of l - kappa s on the disc of radius b, and
 /// the Coulomb fixed point b <- mu lambda. Every matrix has the pattern of K with [G; T]^T [G; T]:
-/// CHOLMOD analyses it once. The first solve is the one without contact, returned as it is when
-/// nothing penetrates (an opening cut: the same numbers as without friction, bit for bit). Fills
-/// report["contact"] (the keys of solve_with_contact) and report["friction"]. Throws xfem::Error
-/// when settings.max_solves is reached.
+/// CHOLMOD analyses it once. The linear solves are `solver`'s (CHOLMOD's or PETSc's). The first
+/// solve is the one without contact, returned as it is when nothing penetrates (an opening cut:
+/// the same numbers as without friction, bit for bit). Fills report["contact"] (the keys of
+/// solve_with_contact) and report["friction"]. Throws xfem::Error when settings.max_solves is reached.
 Eigen::VectorXd solve_with_friction(const LinearSystem& s, const ContactOperator& c, const ContactIteration& settings,
-                                    const std::string& ordering, bool ticking, Json& report, double* residual,
+                                    PenalisedSolver& solver, Json& report, double* residual,
                                     ContactOutcome* outcome = nullptr, FrictionOutcome* friction = nullptr);
 
 }  // namespace xfem

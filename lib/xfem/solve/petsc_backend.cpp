@@ -54,4 +54,31 @@ Eigen::VectorXd solve_with_petsc(PetscMatrix&& K, const LinearSystem& s, PetscSo
   return p.u;
 }
 
+PetscPenalisedSolver::PetscPenalisedSolver(PetscSolveOptions options, bool root, bool verbose, bool ticking)
+    : options_(std::move(options)), root_(root), verbose_(verbose), ticking_(ticking) {}
+
+Eigen::VectorXd PetscPenalisedSolver::solve_unpenalised(const LinearSystem& s, Json& report, double* residual) {
+  system_.n = s.n, system_.np = s.np, system_.ns = s.ns, system_.nb = s.nb;
+  system_.coordinates = s.coordinates;
+  if (options_.enriched_block == "auto") options_.enriched_block = s.n > s.np ? "direct" : "gamg";
+  const Eigen::VectorXd u = solve_with_petsc(petsc_matrix(s.K), s, options_, root_, verbose_, ticking_, report, residual);
+  iterations_.push_back(report["iterations"].get<long>());
+  return petsc_broadcast(u, 3 * s.n);
+}
+
+Eigen::VectorXd PetscPenalisedSolver::solve(const LinearSystem& s, const SparseMatrix& K, const Eigen::VectorXd& f,
+                                            const char* what, double* residual) {
+  system_.f = f;
+  system_.fixed = s.fixed;
+  system_.fixed_values = s.fixed_values;
+  const PetscResult p = petsc_solve(petsc_matrix(K), system_, options_);
+  iterations_.push_back(p.iterations);
+  if (root_)
+    cli::detail(std::string(what) + ": PETSc CG + " + p.preconditioner + ": " + std::to_string(p.iterations) +
+                " iterations; setup " + cli::three_digits(p.setup_seconds) + " s, solve " +
+                cli::three_digits(p.solve_seconds) + " s");
+  *residual = p.relative_residual;
+  return petsc_broadcast(p.u, 3 * s.n);
+}
+
 }  // namespace xfem

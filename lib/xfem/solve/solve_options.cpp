@@ -49,7 +49,7 @@ void add_solve_options(CLI::App& app, SolveOptions& o) {
   app.add_option("--contact-tol", o.contact.tolerance, "contact (a system assembled with \"contact\"): the largest "
                  "penetration of the cut's faces accepted, m (default: 1e-8 max |u|); with \"friction\" also the largest "
                  "slip of a sticking node and the friction multipliers' error, in m")->check(cli::positive());
-  app.add_option("--contact-iterations", o.contact.max_solves, "contact: factorizations at most (default 100)")
+  app.add_option("--contact-iterations", o.contact.max_solves, "contact: linear solves (CHOLMOD: factorizations) at most (default 100)")
       ->check(cli::range(2, 100000));
   app.add_option("--contact-pressure", o.contact_pressure_path, "contact: also write the contact pressure of each "
                  "contact node (Matrix Market, NP x cuts, Pa; docs/FORMATS.md) for xfem-visualize --contact-pressure");
@@ -59,13 +59,10 @@ bool check_solve_options(SolveOptions& o) {
   cli::check_output(o.output, {".mtx"}, true);
   if (!o.report_path.empty()) cli::check_output(o.report_path, {".json"}, true);
   if (!o.contact_pressure_path.empty()) cli::check_output(o.contact_pressure_path, {".mtx"}, true);
-  // Contact is iterated on CHOLMOD factorizations (contact_solve.h).
+  // Contact is iterated on either backend (contact_solve.h: PenalisedSolver).
   const bool with_contact = has_contact_operator(o.dir);
-  if (with_contact && o.backend == "petsc")
-    throw Error(o.dir + ": contact between the cut's faces is solved by the cholmod backend only (give --backend cholmod)");
   if (!with_contact && !o.contact_pressure_path.empty())
     throw Error(o.dir + ": --contact-pressure: the system has no contact operator (problem.json \"contact\" is off)");
-  if (with_contact) o.backend = "cholmod";
   return with_contact;
 }
 

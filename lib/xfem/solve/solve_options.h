@@ -20,9 +20,8 @@ struct SolveOptions {
 void add_solve_options(CLI::App& app, SolveOptions& o);
 
 /// Checks the output paths (cli::check_output) and refuses what the system cannot do with them:
-/// --contact-pressure for a system without a contact operator, and contact with --backend petsc
-/// ("<dir>: ..."). Returns whether the system holds a contact operator; then the backend is
-/// CHOLMOD.
+/// --contact-pressure for a system without a contact operator ("<dir>: ..."). Returns whether the
+/// system holds a contact operator (iterated on either backend).
 bool check_solve_options(SolveOptions& o);
 
 }  // namespace xfem
