@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "xfem/core/boundary_groups.h"
@@ -65,10 +66,16 @@ struct Node {
 };
 
 Selector parse_selector(const Node& n) {
-  n.require_object({"half_spaces", "box", "point_array", "group"});
-  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group");
+  n.require_object({"half_spaces", "box", "point_array", "group", "boundary"});
+  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group, boundary");
   Selector s;
-  if (n.has("half_spaces")) {
+  if (n.has("boundary")) {
+    // Only true: "boundary": false would select nothing, or everything else, and says neither.
+    const Node b = n.at("boundary");
+    if (!b.j.is_boolean() || !b.j.get<bool>())
+      b.fail("must be true (the nodes of the mesh's boundary faces), got " + b.j.dump());
+    s.kind = Selector::Kind::Boundary;
+  } else if (n.has("half_spaces")) {
     s.kind = Selector::Kind::HalfSpaces;
     const Node list = n.at("half_spaces");
     if (list.array_size() == 0) list.fail("must list at least one plane");
@@ -218,6 +225,18 @@ PrescribedRotation parse_rotation(const Node& n) {
   if (n.has("center")) r.centre = n.at("center").vector3();
   if (n.has("translation")) r.translation = n.at("translation").vector3();
   return r;
+}
+
+// u(X) = gradient (X - center) + translation, node by node (DirichletCondition::linear).
+PrescribedLinear parse_linear(const Node& n) {
+  n.require_object({"gradient", "center", "translation"});
+  PrescribedLinear l;
+  const Node g = n.at("gradient");
+  if (g.array_size() != 3) g.fail("must be a list of 3 rows of 3 numbers, got " + std::to_string(g.j.size()) + " rows");
+  for (std::size_t i = 0; i < 3; ++i) l.gradient.row(static_cast<Eigen::Index>(i)) = g.at(i).vector3().transpose();
+  if (n.has("center")) l.centre = n.at("center").vector3();
+  if (n.has("translation")) l.translation = n.at("translation").vector3();
+  return l;
 }
 
 std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
@@ -377,15 +396,20 @@ Problem parse_problem(const Json& j, const std::string& file) {
     const Node list = root.at("dirichlet");
     for (std::size_t i = 0; i < list.array_size(); ++i) {
       const Node c = list.at(i);
-      c.require_object({"name", "selector", "value", "exact", "enriched_dofs", "rotation", "value_array"});
+      c.require_object({"name", "selector", "value", "exact", "enriched_dofs", "rotation", "linear", "value_array"});
       DirichletCondition d;
       d.name = optional_name(c);
       d.selector = parse_selector(c.at("selector"));
-      if (c.has("value") + c.has("exact") + c.has("rotation") + c.has("value_array") != 1)
-        c.fail("must have exactly one of value, exact, rotation, value_array");
+      if (c.has("value") + c.has("exact") + c.has("rotation") + c.has("linear") + c.has("value_array") != 1)
+        c.fail("must have exactly one of value, exact, rotation, linear, value_array");
       if (c.has("enriched_dofs") && !c.has("exact")) c.at("enriched_dofs").fail("applies to an exact condition only");
       if (c.has("rotation")) {
         d.rotation = parse_rotation(c.at("rotation"));
+        p.dirichlet.push_back(d);
+        continue;
+      }
+      if (c.has("linear")) {
+        d.linear = parse_linear(c.at("linear"));
         p.dirichlet.push_back(d);
         continue;
       }
@@ -481,6 +505,11 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
       throw Error(what + ": point array '" + it->first + "' must have 1 component per point");
     array = &it->second;
   }
+  if (s.kind == Selector::Kind::Boundary) {
+    std::vector<int> nodes = boundary_nodes(mesh);
+    if (nodes.empty()) throw Error(what + " selects no node (the mesh has no tet)");
+    return nodes;
+  }
   std::vector<int> nodes;
   for (Eigen::Index k = 0; k < np; ++k) {
     const Eigen::Vector3d x = mesh.points.row(k).transpose();
@@ -496,10 +525,39 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
       case Selector::Kind::Group:
         in = (*array)(k) != 0.0;
         break;
+      case Selector::Kind::Boundary:  // returned above
+        break;
     }
     if (in) nodes.push_back(static_cast<int>(k));
   }
   if (nodes.empty()) throw Error(what + " selects no node");
+  return nodes;
+}
+
+std::vector<int> boundary_nodes(const TetMesh& mesh) {
+  // Every tet's 4 faces, sorted node triples: a triple that appears once is a boundary face.
+  std::vector<std::array<int, 3>> faces;
+  faces.reserve(4 * static_cast<std::size_t>(mesh.tets.rows()));
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int c = 0, i = 0; c < 4; ++c)
+        if (c != skip) f[i++] = mesh.tets(t, c);
+      std::sort(f.begin(), f.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::vector<char> on(mesh.points.rows(), 0);
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i == 1)
+      for (int k : faces[i]) on[k] = 1;
+    i = j;
+  }
+  std::vector<int> nodes;
+  for (std::size_t k = 0; k < on.size(); ++k)
+    if (on[k]) nodes.push_back(static_cast<int>(k));
   return nodes;
 }
 

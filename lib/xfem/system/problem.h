@@ -16,7 +16,7 @@ namespace xfem {
 
 /// Which mesh nodes a boundary condition acts on (problem.json, docs/FORMATS.md).
 struct Selector {
-  enum class Kind { HalfSpaces, Box, PointArray, Group };
+  enum class Kind { HalfSpaces, Box, PointArray, Group, Boundary };
   Kind kind = Kind::HalfSpaces;
   /// HalfSpaces: node x selected when (x - point) . normal > 0 strictly for every plane (the
   /// convention of the paper's code). Normals need not be unit vectors.
@@ -24,6 +24,7 @@ struct Selector {
   Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< Box: lo <= x <= hi (closed)
   std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero; Group: the group's name,
                       ///< its nodes are where the point array group_<name> is nonzero (boundary_groups.h)
+  // Boundary ("boundary": true): the nodes of the mesh's boundary faces (boundary_nodes below).
 };
 
 /// A finite rigid motion prescribed node by node (problem.json "rotation"): the node at X moves
@@ -35,22 +36,34 @@ struct PrescribedRotation {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
 };
 
+/// A linear displacement field prescribed node by node (problem.json "linear"): the node at X
+/// gets u(X) = gradient (X - centre) + translation, e.g. a hydrostatic compression u = -e X of a
+/// body's whole boundary (gradient -e I), whose solution is the same field inside.
+struct PrescribedLinear {
+  Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();    ///< H = du_i/dX_j, dimensionless
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();      ///< c, m: where u = translation
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  ///< t, m
+};
+
 /// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
 /// enriched DOFs stay free). A missing (null) component is left free.
-/// Exactly one of `value`, `exact`, `rotation`, `value_array` says what each selected node gets:
-/// the constant `value`; the exact field's displacement at the node, on the node's own side of
-/// the cut (array `side`); the rigid motion `rotation`'s displacement at the node; the node's
-/// tuple of the 3-component point array `value_array` (docs/FORMATS.md "problem.json"). The last
-/// three fix every component.
+/// Exactly one of `value`, `exact`, `rotation`, `linear`, `value_array` says what each selected
+/// node gets: the constant `value`; the exact field's displacement at the node, on the node's own
+/// side of the cut (array `side`); the rigid motion `rotation`'s displacement at the node; the
+/// linear field `linear` at the node; the node's tuple of the 3-component point array
+/// `value_array` (docs/FORMATS.md "problem.json"). The last four fix every component.
 struct DirichletCondition {
   std::string name;  ///< optional, for messages
   Selector selector;
   std::array<std::optional<double>, 3> value;  ///< metres
   std::optional<ExactField> exact;             ///< the exact field prescribed instead of `value`
   std::optional<PrescribedRotation> rotation;  ///< the rigid motion prescribed instead of `value`
+  std::optional<PrescribedLinear> linear;      ///< the linear field prescribed instead of `value`
   std::string value_array;                     ///< non-empty: the point array prescribed instead of `value`
   /// Whether the condition fixes component i (0, 1, 2 = x, y, z) of its nodes.
-  bool fixes(int i) const { return exact || rotation || !value_array.empty() || value[static_cast<std::size_t>(i)]; }
+  bool fixes(int i) const {
+    return exact || rotation || linear || !value_array.empty() || value[static_cast<std::size_t>(i)];
+  }
   /// With `exact`: also prescribe the 4 branch DOF vectors of selected branch-enriched nodes
   /// (the field's crack-tip coefficients, WilliamsField::branch_coefficients) and shift the
   /// original DOF so that the discrete field equals the exact one at the node. false: the
@@ -185,6 +198,11 @@ ExactField read_exact_field(const std::string& path);
 /// when a named point array is missing or has more than one component, or a group is unknown
 /// ("<what>: the mesh has no group 'lid' (its groups: 'fixed', 'pulled')").
 std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
+
+/// Ids of the nodes of the mesh's boundary faces (a face of exactly one tet), increasing: the
+/// "boundary" selector. A cut is not part of the mesh, so its faces are not boundary faces; a
+/// mesh whose tets share no face (e.g. one tet) has every node on its boundary.
+std::vector<int> boundary_nodes(const TetMesh& mesh);
 
 /// Refuses a material.model other than "linear" where a tool would silently apply Hooke's law
 /// instead: throws xfem::Error "<file>: <reason>: material.model \"neo-hookean\" is not supported
