@@ -10,7 +10,7 @@
 # xfem-newton u to 1e-7 of max |u| (the Uzawa loop stops once the gaps are below 1e-8 max |u|;
 # measured 6.0e-9), every nodal pressure within 1e-4 of p (measured 4e-6: 304.3459 Pa), the
 # normal force p A to 1e-6 (A the triangulated sine's area). (Without contact u is far from the
-# uncut field, 2.04 of max |u|: e2e.contact_closed_organ shows it on the linear path; not run here,
+# uncut field, 2.04 of max |u| at e = 0.02: e2e.contact_closed_organ shows it on the linear path; not run here,
 # one xfem-newton solve of the cracked organ is ~8 s of CPU.)
 set -u
 fail() { echo "FAIL: $*" >&2; exit 1; }
