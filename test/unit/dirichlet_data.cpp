@@ -7,6 +7,7 @@
 
 #include "xfem/core/error.h"
 #include "xfem/generate/box_mesh.h"
+#include "xfem/system/assembly.h"
 #include "xfem/system/reactions.h"
 #include "enriched_test_meshes.h"
 
@@ -277,4 +278,17 @@ TEST_CASE("dirichlet_data: bad linear conditions in problem.json", "[dirichlet_d
         "problem.json: dirichlet[0].enriched_dofs applies to an exact condition only");
   CHECK(parse_error(Json{{"linear", 3}}) ==
         "problem.json: dirichlet[0].linear must be an object");
+}
+
+TEST_CASE("dirichlet_data: a Neumann condition on the boundary selector loads every boundary face", "[dirichlet_data]") {
+  // The box [0, 2]^3: a traction t on its whole surface (area 24 m^2) adds up to 24 t; the one
+  // node inside gets nothing.
+  const xfem::EnrichedMesh em = cube();
+  const xfem::Problem p = xfem::parse_problem(xfem::Json::parse(R"({"material": {"E": 1e3, "nu": 0.3},
+      "neumann": [{"selector": {"boundary": true}, "traction": [1, -2, 3]}]})"), "problem.json");
+  const Eigen::VectorXd f = xfem::load_vector(em, p);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (long k = 0; k < em.np; ++k) total += f.segment<3>(3 * k);
+  CHECK((total - 24 * Eigen::Vector3d(1, -2, 3)).norm() < 1e-12);
+  CHECK(f.segment<3>(3 * (1 + 3 * (1 + 3 * 1))).norm() == 0.0);  // the inside node (1, 1, 1)
 }
