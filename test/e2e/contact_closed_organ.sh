@@ -2,12 +2,12 @@
 # Issue 33, "a closed cut under compression behaves as no cut", on the organ (xfem-mesh organ, a
 # curved outer surface) with a sine crack: the hydrostatic check of test/e2e/contact_closed.sh
 # (which does it for a plane, a zig-zag and a node-layer crack in the beam). Every node of the
-# organ's boundary (selector "boundary": true) is moved by u = -e X (Dirichlet value "linear",
-# e = 1e-3): the uncut organ's solution is that field (linear tets reproduce it exactly), its
-# stress -P I with P = (3 lambda + 2 mu) e = E e / (1 - 2 nu) = 30 Pa on every plane, so it is
-# also the frictionless contact solution with a crack of any shape, the faces pressed together by
-# P. The crack lies strictly inside (Dirichlet data hold the original DOFs only: a crack reaching
-# the surface would leave its enriched DOFs free there): the sine z = 0.005 + 0.006 sin(2 pi x /
+# organ's boundary (selector "boundary": true) is moved by u = -e X (Dirichlet "exact": {"linear":
+# ...} with gradient -e I, e = 1e-3): the uncut organ's solution is that field (linear tets
+# reproduce it exactly), its stress -P I with P = (3 lambda + 2 mu) e = E e / (1 - 2 nu) = 30 Pa
+# on every plane, so it is also the frictionless contact solution with a crack of any shape, the
+# faces pressed together by P. The crack lies strictly inside (Dirichlet data hold the original
+# DOFs only: a crack reaching the surface would leave its enriched DOFs free there): the sine z = 0.005 + 0.006 sin(2 pi x /
 # 0.04) over [-0.04, 0.04] x [-0.025, 0.025] m, two wavelengths whose normal turns by up to
 # +-43 degrees, about 2.5 tets (size 0.008) per half wavelength, 80 x 40 quads. Checked: no
 # contact node (no node whose support meets the crack) is a boundary node; with contact every
@@ -29,7 +29,7 @@ B="$XFEM_BIN"
 cat > on.json <<'EOF'
 {"material": {"E": 3e3, "nu": 0.45}, "contact": true,
  "dirichlet": [{"name": "compressed surface", "selector": {"boundary": true},
-                "linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}}]}
+                "exact": {"linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}}}]}
 EOF
 sed 's/"contact": true/"contact": false/' on.json > off.json
 "$B/xfem-classify" -q organ.vtu --cut sine.vtp -o classified.vtu || fail "classify"
@@ -105,6 +105,6 @@ bad() {  # $1: what, $2: the problem's dirichlet list, $3: the expected message
 }
 bad "boundary false" '[{"selector": {"boundary": false}, "value": [0, 0, 0]}]' \
   "bad.json: dirichlet[0].selector.boundary must be true (the nodes of the mesh's boundary faces), got false"
-bad "gradient of 2 rows" '[{"selector": {"boundary": true}, "linear": {"gradient": [[1, 0, 0], [0, 1, 0]]}}]' \
-  "bad.json: dirichlet[0].linear.gradient must be a list of 3 rows of 3 numbers, got 2 rows"
+bad "gradient of 2 rows" '[{"selector": {"boundary": true}, "exact": {"linear": {"gradient": [[1, 0, 0], [0, 1, 0]]}}}]' \
+  "bad.json: dirichlet[0].exact.linear.gradient must be a list of 3 rows of 3 numbers"
 cd / && rm -rf "$XFEM_SCRATCH"

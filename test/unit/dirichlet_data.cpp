@@ -196,11 +196,11 @@ TEST_CASE("dirichlet_data: bad rotation and value_array conditions in problem.js
   const Json rotation = Json::parse(R"({"axis": [0, 0, 1], "angle_deg": 30})");
   CHECK(parse_error(Json{{"rotation", rotation}}) == "(no error)");
   CHECK(parse_error(Json{{"name", "lid"}, {"rotation", rotation}, {"value", {0, 0, 0}}}) ==
-        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, linear, value_array");
+        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, value_array");
   CHECK(parse_error(Json{{"rotation", rotation}, {"value_array", "u"}}) ==
-        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, linear, value_array");
+        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, value_array");
   CHECK(parse_error(Json{{"name", "nothing"}}) ==
-        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, linear, value_array");
+        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, value_array");
   CHECK(parse_error(Json{{"rotation", Json::parse(R"({"axis": [0, 0, 0], "angle_deg": 30})")}}) ==
         "problem.json: dirichlet[0].rotation.axis must not be zero");
   CHECK(parse_error(Json{{"rotation", Json::parse(R"({"axis": [0, 0, 1]})")}}) ==
@@ -222,62 +222,49 @@ TEST_CASE("dirichlet_data: bad rotation and value_array conditions in problem.js
   CHECK(parse_error(Json{{"value_array", ""}}) == "problem.json: dirichlet[0].value_array must name a point array of the mesh");
 }
 
-TEST_CASE("dirichlet_data: a linear field H (X - c) + t node by node, scaled by the load", "[dirichlet_data]") {
+TEST_CASE("dirichlet_data: an exact linear field on the boundary selector fixes the boundary's original DOFs only",
+          "[dirichlet_data]") {
+  // Hydrostatic compression u = -e X of a body's whole surface (e2e.contact_closed_organ): the
+  // "boundary" selector with the exact field "linear" (u = translation + G X).
+  const double e = 1e-3;
+  const xfem::Json compress = xfem::Json::parse(R"({"selector": {"boundary": true},
+      "exact": {"linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}}})");
   const xfem::EnrichedMesh em = cube();
-  const xfem::Problem p = problem_with(xfem::Json::parse(R"({"linear": {
-      "gradient": [[0.1, 0.2, 0], [0, -0.3, 0.05], [0.4, 0, 0.25]], "center": [1, 1, 2], "translation": [0.5, 0, -1]}})"));
-  REQUIRE(p.dirichlet[0].linear);
-  Eigen::Matrix3d H;
-  H << 0.1, 0.2, 0, 0, -0.3, 0.05, 0.4, 0, 0.25;
-  const Eigen::Vector3d c(1, 1, 2), t(0.5, 0, -1);
-  const Eigen::VectorXd u = prescribed(em, p), quarter = prescribed(em, p, 0.25);
-  REQUIRE(u.allFinite());  // every component of every node fixed
+  const xfem::Problem b = problem_with(compress);
+  const Eigen::VectorXd ub = prescribed(em, b), quarter = prescribed(em, b, 0.25);
+  const long inside = 1 + 3 * (1 + 3 * 1);  // node (1, 1, 1), the one inside the 2 x 2 x 2 cubes: free
   for (long k = 0; k < em.np; ++k) {
-    const Eigen::Vector3d v = H * (node(em, k) - c) + t;
-    CHECK((u.segment<3>(3 * k) - v).norm() < 1e-15);
-    CHECK((quarter.segment<3>(3 * k) - 0.25 * v).norm() < 1e-15);
+    CHECK(std::isnan(ub[3 * k]) == (k == inside));
+    if (k == inside) continue;
+    CHECK((ub.segment<3>(3 * k) + e * node(em, k)).norm() < 1e-18);
+    CHECK((quarter.segment<3>(3 * k) + 0.25 * e * node(em, k)).norm() < 1e-18);
   }
-  // Node (1, 1, 2) is the centre: it gets the translation alone, bit for bit.
-  CHECK(u.segment<3>(3 * (1 + 3 * (1 + 3 * 2))) == t);
-  // Center and translation default to 0: hydrostatic compression u = -e X.
-  const xfem::Problem h = problem_with(xfem::Json::parse(R"({"linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}})"));
-  const Eigen::VectorXd uh = prescribed(em, h);
-  for (long k = 0; k < em.np; ++k) CHECK((uh.segment<3>(3 * k) + 1e-3 * node(em, k)).norm() < 1e-18);
-  // On the boundary only: the one inside node (1, 1, 1) of the 2 x 2 x 2 cubes stays free.
-  const xfem::Problem b = problem_with(xfem::Json::parse(R"({"selector": {"boundary": true},
-      "linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}})"));
-  const Eigen::VectorXd ub = prescribed(em, b);
-  for (long k = 0; k < em.np; ++k) CHECK(std::isnan(ub[3 * k]) == (k == 1 + 3 * (1 + 3 * 1)));
-  // The reactions group counts its 3 components per node.
+  // The reactions group counts its 3 components per boundary node.
   CHECK(xfem::dirichlet_groups(em.mesh, b).dofs[0].size() == 3 * 26);
+  // Cut through (sign-enriched nodes on both sides): every node is on the boundary of the
+  // 1 x 1 x 2 cubes and gets -e X whatever its side; its enriched DOFs stay free.
+  const xfem::EnrichedMesh cut = xfem_test::cut_box(0.25);
+  REQUIRE(cut.ns == 8);
+  std::vector<long> fixed;
+  std::vector<double> values;
+  xfem::dirichlet_data(cut, b, fixed, values, 1.0);
+  REQUIRE(fixed.size() == static_cast<std::size_t>(3 * cut.np));
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    REQUIRE(fixed[i] < 3 * cut.np);
+    CHECK(std::abs(values[i] + e * cut.mesh.points(fixed[i] / 3, fixed[i] % 3)) < 1e-18);
+  }
 }
 
-TEST_CASE("dirichlet_data: bad linear conditions in problem.json", "[dirichlet_data]") {
+TEST_CASE("dirichlet_data: a linear field is the exact field linear, not a Dirichlet value of its own",
+          "[dirichlet_data]") {
   using xfem::Json;
   const Json I = Json::parse(R"([[1, 0, 0], [0, 1, 0], [0, 0, 1]])");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}}}}) == "(no error)");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}}}, {"value", {0, 0, 0}}}) ==
-        "problem.json: dirichlet[0] must have exactly one of value, exact, rotation, linear, value_array");
-  CHECK(parse_error(Json{{"linear", Json::object()}}) == "problem.json: missing field 'dirichlet[0].linear.gradient'");
-  CHECK(parse_error(Json{{"linear", {{"gradient", Json::parse("[[1, 0, 0], [0, 1, 0]]")}}}}) ==
-        "problem.json: dirichlet[0].linear.gradient must be a list of 3 rows of 3 numbers, got 2 rows");
-  CHECK(parse_error(Json{{"linear", {{"gradient", 1.0}}}}) == "problem.json: dirichlet[0].linear.gradient must be a list");
-  CHECK(parse_error(Json{{"linear", {{"gradient", Json::parse("[[1, 0, 0], [0, 1], [0, 0, 1]]")}}}}) ==
-        "problem.json: dirichlet[0].linear.gradient[1] must be a list of 3 numbers");
-  CHECK(parse_error(Json{{"linear", {{"gradient", Json::parse("[[1, 0, 0], [0, 1, 0], [0, \"0\", 1]]")}}}}) ==
-        "problem.json: dirichlet[0].linear.gradient[2][1] must be a number");
-  CHECK(parse_error(Json{{"linear", {{"gradient", {{1, 0, 0}, {0, std::numeric_limits<double>::quiet_NaN(), 0}, {0, 0, 1}}}}}}) ==
-        "problem.json: dirichlet[0].linear.gradient[1][1] must be finite");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}, {"center", {0, std::numeric_limits<double>::infinity(), 0}}}}}) ==
-        "problem.json: dirichlet[0].linear.center[1] must be finite");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}, {"translation", {0, 0}}}}}) ==
-        "problem.json: dirichlet[0].linear.translation must be a list of 3 numbers");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}, {"centre", {0, 0, 0}}}}}) ==
-        "problem.json: unknown key 'dirichlet[0].linear.centre' (allowed here: gradient, center, translation)");
-  CHECK(parse_error(Json{{"linear", {{"gradient", I}}}, {"enriched_dofs", "exact"}}) ==
-        "problem.json: dirichlet[0].enriched_dofs applies to an exact condition only");
-  CHECK(parse_error(Json{{"linear", 3}}) ==
-        "problem.json: dirichlet[0].linear must be an object");
+  CHECK(parse_error(Json{{"exact", {{"linear", {{"gradient", I}}}}}}) == "(no error)");
+  CHECK(parse_error(Json{{"linear", {{"gradient", I}}}}) ==
+        "problem.json: unknown key 'dirichlet[0].linear' (allowed here: name, selector, value, exact, enriched_dofs, "
+        "rotation, value_array)");
+  CHECK(parse_error(Json{{"exact", {{"linear", {{"gradient", I}, {"center", {0, 0, 0}}}}}}}) ==
+        "problem.json: unknown key 'dirichlet[0].exact.linear.center' (allowed here: gradient, translation)");
 }
 
 TEST_CASE("dirichlet_data: a Neumann condition on the boundary selector loads every boundary face", "[dirichlet_data]") {

@@ -42,10 +42,6 @@ Eigen::Vector3d rotation_displacement(const PrescribedRotation& r, const Eigen::
   return Eigen::AngleAxisd(load * r.angle, r.axis) * arm - arm + load * r.translation;
 }
 
-Eigen::Vector3d linear_displacement(const PrescribedLinear& l, const Eigen::Vector3d& X, double load) {
-  return load * (l.gradient * (X - l.centre) + l.translation);
-}
-
 void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<long>& fixed,
                     std::vector<double>& values, double load) {
   if (!(load > 0.0 && load <= 1.0))
@@ -71,11 +67,6 @@ void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<
       const Eigen::Vector3d x = em.mesh.points.row(k).transpose();
       if (d.rotation) {
         const Eigen::Vector3d u = rotation_displacement(*d.rotation, x, load);
-        for (int i = 0; i < 3; ++i) prescribe(3L * k + i, u[i]);
-        continue;
-      }
-      if (d.linear) {
-        const Eigen::Vector3d u = linear_displacement(*d.linear, x, load);
         for (int i = 0; i < 3; ++i) prescribe(3L * k + i, u[i]);
         continue;
       }

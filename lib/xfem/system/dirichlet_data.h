@@ -16,9 +16,8 @@ namespace xfem {
 ///                 vectors fixed to the field's crack-tip coefficients and its original DOF shifted
 ///                 so that the discrete displacement at the node is exact;
 ///   rotation:     R(axis, angle) (X - centre) + centre + translation - X;
-///   linear:       gradient (X - centre) + translation;
 ///   value_array:  the node's tuple of the 3-component point array.
-/// `load` in (0, 1] is the load factor of a step of a nonlinear solve: value, exact, linear and
+/// `load` in (0, 1] is the load factor of a step of a nonlinear solve: value, exact and
 /// value_array values (and an exact field's branch coefficients) are multiplied by it, a rotation
 /// turns by load * angle and translates by load * translation, so that a large rotation is reached
 /// along its circle, not along the chord. load = 1 gives the full data, bit for bit the values
@@ -34,8 +33,5 @@ void dirichlet_data(const EnrichedMesh& em, const Problem& problem, std::vector<
 /// The displacement the rigid motion `r` prescribes at X when it has gone `load` of its way
 /// (turned by load * angle, translated by load * translation).
 Eigen::Vector3d rotation_displacement(const PrescribedRotation& r, const Eigen::Vector3d& X, double load = 1.0);
-
-/// The displacement the linear field `l` prescribes at X, times the load factor `load`.
-Eigen::Vector3d linear_displacement(const PrescribedLinear& l, const Eigen::Vector3d& X, double load = 1.0);
 
 }  // namespace xfem

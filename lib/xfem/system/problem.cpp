@@ -227,18 +227,6 @@ PrescribedRotation parse_rotation(const Node& n) {
   return r;
 }
 
-// u(X) = gradient (X - center) + translation, node by node (DirichletCondition::linear).
-PrescribedLinear parse_linear(const Node& n) {
-  n.require_object({"gradient", "center", "translation"});
-  PrescribedLinear l;
-  const Node g = n.at("gradient");
-  if (g.array_size() != 3) g.fail("must be a list of 3 rows of 3 numbers, got " + std::to_string(g.j.size()) + " rows");
-  for (std::size_t i = 0; i < 3; ++i) l.gradient.row(static_cast<Eigen::Index>(i)) = g.at(i).vector3().transpose();
-  if (n.has("center")) l.centre = n.at("center").vector3();
-  if (n.has("translation")) l.translation = n.at("translation").vector3();
-  return l;
-}
-
 std::string optional_name(const Node& n) { return n.has("name") ? n.at("name").string() : std::string(); }
 
 // A cut index: a non-negative integer (below kMaxCuts; the mesh's own count is checked later).
@@ -396,20 +384,15 @@ Problem parse_problem(const Json& j, const std::string& file) {
     const Node list = root.at("dirichlet");
     for (std::size_t i = 0; i < list.array_size(); ++i) {
       const Node c = list.at(i);
-      c.require_object({"name", "selector", "value", "exact", "enriched_dofs", "rotation", "linear", "value_array"});
+      c.require_object({"name", "selector", "value", "exact", "enriched_dofs", "rotation", "value_array"});
       DirichletCondition d;
       d.name = optional_name(c);
       d.selector = parse_selector(c.at("selector"));
-      if (c.has("value") + c.has("exact") + c.has("rotation") + c.has("linear") + c.has("value_array") != 1)
-        c.fail("must have exactly one of value, exact, rotation, linear, value_array");
+      if (c.has("value") + c.has("exact") + c.has("rotation") + c.has("value_array") != 1)
+        c.fail("must have exactly one of value, exact, rotation, value_array");
       if (c.has("enriched_dofs") && !c.has("exact")) c.at("enriched_dofs").fail("applies to an exact condition only");
       if (c.has("rotation")) {
         d.rotation = parse_rotation(c.at("rotation"));
-        p.dirichlet.push_back(d);
-        continue;
-      }
-      if (c.has("linear")) {
-        d.linear = parse_linear(c.at("linear"));
         p.dirichlet.push_back(d);
         continue;
       }

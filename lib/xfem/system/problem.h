@@ -36,34 +36,22 @@ struct PrescribedRotation {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
 };
 
-/// A linear displacement field prescribed node by node (problem.json "linear"): the node at X
-/// gets u(X) = gradient (X - centre) + translation, e.g. a hydrostatic compression u = -e X of a
-/// body's whole boundary (gradient -e I), whose solution is the same field inside.
-struct PrescribedLinear {
-  Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();    ///< H = du_i/dX_j, dimensionless
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();      ///< c, m: where u = translation
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  ///< t, m
-};
-
 /// Prescribed displacement of the original nodal DOFs of the selected nodes (DESIGN.md: the
 /// enriched DOFs stay free). A missing (null) component is left free.
-/// Exactly one of `value`, `exact`, `rotation`, `linear`, `value_array` says what each selected
-/// node gets: the constant `value`; the exact field's displacement at the node, on the node's own
-/// side of the cut (array `side`); the rigid motion `rotation`'s displacement at the node; the
-/// linear field `linear` at the node; the node's tuple of the 3-component point array
-/// `value_array` (docs/FORMATS.md "problem.json"). The last four fix every component.
+/// Exactly one of `value`, `exact`, `rotation`, `value_array` says what each selected node gets:
+/// the constant `value`; the exact field's displacement at the node, on the node's own side of
+/// the cut (array `side`); the rigid motion `rotation`'s displacement at the node; the node's
+/// tuple of the 3-component point array `value_array` (docs/FORMATS.md "problem.json"). The last
+/// three fix every component.
 struct DirichletCondition {
   std::string name;  ///< optional, for messages
   Selector selector;
   std::array<std::optional<double>, 3> value;  ///< metres
   std::optional<ExactField> exact;             ///< the exact field prescribed instead of `value`
   std::optional<PrescribedRotation> rotation;  ///< the rigid motion prescribed instead of `value`
-  std::optional<PrescribedLinear> linear;      ///< the linear field prescribed instead of `value`
   std::string value_array;                     ///< non-empty: the point array prescribed instead of `value`
   /// Whether the condition fixes component i (0, 1, 2 = x, y, z) of its nodes.
-  bool fixes(int i) const {
-    return exact || rotation || linear || !value_array.empty() || value[static_cast<std::size_t>(i)];
-  }
+  bool fixes(int i) const { return exact || rotation || !value_array.empty() || value[static_cast<std::size_t>(i)]; }
   /// With `exact`: also prescribe the 4 branch DOF vectors of selected branch-enriched nodes
   /// (the field's crack-tip coefficients, WilliamsField::branch_coefficients) and shift the
   /// original DOF so that the discrete field equals the exact one at the node. false: the
