@@ -129,6 +129,15 @@ for k in 001 002 003 004 005; do
     [ "$a" = "$b" ] || fail "step $k: $2 ($b) and xfem-visualize's $1 ($a) differ in size"
   done
 done
+# The linear exact field is the same on both sides of the cut: accepted, and the bottom held by
+# u = 0 + 0 x gives the frames of "value": [0, 0, 0] (the same values, another problem file).
+sed 's/"value": \[0, 0, 0\]/"exact": {"linear": {"gradient": [[0, 0, 0], [0, 0, 0], [0, 0, 0]]}}/' "$P" >"$S/linear.json"
+grep -q '"linear"' "$S/linear.json" || fail "linear.json: no linear field"
+"$SWEEP" -q "$S/box.vtu" --cut "$S/sweep.vtp" --problem "$S/linear.json" --steps 5 -o "$S/linear" --solutions \
+  || fail "sweep with a linear exact field"
+for k in 002 005; do
+  cmp -s <(mtx_values "$S/linear/u_$k.mtx") <(mtx_values "$S/frames/u_$k.mtx") || fail "step $k: linear field != value"
+done
 # A frame's solution carries the fingerprints of its inputs: xfem-visualize takes it with the body
 # enriched for its own step's cut and its problem, and refuses it with another problem.
 grep -q "^% xfem-fingerprint cut fnv1a64:" "$S/frames/u_003.mtx" || fail "u_003.mtx: no cut fingerprint"

@@ -7,6 +7,7 @@
 
 #include "xfem/core/error.h"
 #include "xfem/generate/box_mesh.h"
+#include "xfem/system/assembly.h"
 #include "xfem/system/reactions.h"
 #include "enriched_test_meshes.h"
 
@@ -219,4 +220,62 @@ TEST_CASE("dirichlet_data: bad rotation and value_array conditions in problem.js
         "problem.json: dirichlet[0].enriched_dofs applies to an exact condition only");
   CHECK(parse_error(Json{{"value_array", 3}}) == "problem.json: dirichlet[0].value_array must be a string");
   CHECK(parse_error(Json{{"value_array", ""}}) == "problem.json: dirichlet[0].value_array must name a point array of the mesh");
+}
+
+TEST_CASE("dirichlet_data: an exact linear field on the boundary selector fixes the boundary's original DOFs only",
+          "[dirichlet_data]") {
+  // Hydrostatic compression u = -e X of a body's whole surface (e2e.contact_closed_organ): the
+  // "boundary" selector with the exact field "linear" (u = translation + G X).
+  const double e = 1e-3;
+  const xfem::Json compress = xfem::Json::parse(R"({"selector": {"boundary": true},
+      "exact": {"linear": {"gradient": [[-1e-3, 0, 0], [0, -1e-3, 0], [0, 0, -1e-3]]}}})");
+  const xfem::EnrichedMesh em = cube();
+  const xfem::Problem b = problem_with(compress);
+  const Eigen::VectorXd ub = prescribed(em, b), quarter = prescribed(em, b, 0.25);
+  const long inside = 1 + 3 * (1 + 3 * 1);  // node (1, 1, 1), the one inside the 2 x 2 x 2 cubes: free
+  for (long k = 0; k < em.np; ++k) {
+    CHECK(std::isnan(ub[3 * k]) == (k == inside));
+    if (k == inside) continue;
+    CHECK((ub.segment<3>(3 * k) + e * node(em, k)).norm() < 1e-18);
+    CHECK((quarter.segment<3>(3 * k) + 0.25 * e * node(em, k)).norm() < 1e-18);
+  }
+  // The reactions group counts its 3 components per boundary node.
+  CHECK(xfem::dirichlet_groups(em.mesh, b).dofs[0].size() == 3 * 26);
+  // Cut through (sign-enriched nodes on both sides): every node is on the boundary of the
+  // 1 x 1 x 2 cubes and gets -e X whatever its side; its enriched DOFs stay free.
+  const xfem::EnrichedMesh cut = xfem_test::cut_box(0.25);
+  REQUIRE(cut.ns == 8);
+  std::vector<long> fixed;
+  std::vector<double> values;
+  xfem::dirichlet_data(cut, b, fixed, values, 1.0);
+  REQUIRE(fixed.size() == static_cast<std::size_t>(3 * cut.np));
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    REQUIRE(fixed[i] < 3 * cut.np);
+    CHECK(std::abs(values[i] + e * cut.mesh.points(fixed[i] / 3, fixed[i] % 3)) < 1e-18);
+  }
+}
+
+TEST_CASE("dirichlet_data: a linear field is the exact field linear, not a Dirichlet value of its own",
+          "[dirichlet_data]") {
+  using xfem::Json;
+  const Json I = Json::parse(R"([[1, 0, 0], [0, 1, 0], [0, 0, 1]])");
+  CHECK(parse_error(Json{{"exact", {{"linear", {{"gradient", I}}}}}}) == "(no error)");
+  CHECK(parse_error(Json{{"linear", {{"gradient", I}}}}) ==
+        "problem.json: unknown key 'dirichlet[0].linear' (allowed here: name, selector, value, exact, enriched_dofs, "
+        "rotation, value_array)");
+  CHECK(parse_error(Json{{"exact", {{"linear", {{"gradient", I}, {"center", {0, 0, 0}}}}}}}) ==
+        "problem.json: unknown key 'dirichlet[0].exact.linear.center' (allowed here: gradient, translation)");
+}
+
+TEST_CASE("dirichlet_data: a Neumann condition on the boundary selector loads every boundary face", "[dirichlet_data]") {
+  // The box [0, 2]^3: a traction t on its whole surface (area 24 m^2) adds up to 24 t; the one
+  // node inside gets nothing.
+  const xfem::EnrichedMesh em = cube();
+  const xfem::Problem p = xfem::parse_problem(xfem::Json::parse(R"({"material": {"E": 1e3, "nu": 0.3},
+      "neumann": [{"selector": {"boundary": true}, "traction": [1, -2, 3]}]})"), "problem.json");
+  const Eigen::VectorXd f = xfem::load_vector(em, p);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (long k = 0; k < em.np; ++k) total += f.segment<3>(3 * k);
+  CHECK((total - 24 * Eigen::Vector3d(1, -2, 3)).norm() < 1e-12);
+  CHECK(f.segment<3>(3 * (1 + 3 * (1 + 3 * 1))).norm() == 0.0);  // the inside node (1, 1, 1)
 }

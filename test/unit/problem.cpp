@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/system/problem.h"
 
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
+#include <map>
+#include <set>
 
 #include "xfem/generate/box_mesh.h"
 #include "xfem/core/error.h"
@@ -75,6 +79,83 @@ TEST_CASE("problem: selectors pick nodes by half-spaces (strict), boxes (closed)
   CHECK(xfem::select_nodes(named, m, "x") == std::vector<int>{5});
 }
 
+TEST_CASE("problem: the boundary selector picks the nodes of faces of one tet, on a box and on a curved body",
+          "[problem]") {
+  // A 3 x 3 x 4 grid of cubes: 4 x 4 x 5 = 80 nodes, of which the 2 x 2 x 3 = 12 inside are left out.
+  const xfem::TetMesh m = xfem::box_mesh({3, 3, 4}, {0, 0, 0}, {0.03, 0.06, 0.2});
+  xfem::Json j = beam();
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": true})");
+  const xfem::Problem p = xfem::parse_problem(j, "problem.json");
+  REQUIRE(p.dirichlet[0].selector.kind == xfem::Selector::Kind::Boundary);
+  const std::vector<int> nodes = xfem::select_nodes(p.dirichlet[0].selector, m, "boundary");
+  CHECK(nodes.size() == 68);
+  std::vector<int> on_faces;  // by coordinates: a node on a face of the box
+  for (int k = 0; k < m.points.rows(); ++k) {
+    const Eigen::Vector3d x = m.points.row(k);
+    if ((x.array() <= 1e-12).any() || (x.array() >= Eigen::Array3d(0.03, 0.06, 0.2) - 1e-12).any()) on_faces.push_back(k);
+  }
+  CHECK(nodes == on_faces);
+  // A curved body: the tets of the grid whose centroid lies in a ball (a staircase surface that no
+  // box or half-space selects). Every kept node on a face of exactly one kept tet is a boundary
+  // node; the node at the ball's centre, with all its tets kept, is not.
+  const xfem::TetMesh g = xfem::box_mesh({6, 6, 6}, {-1, -1, -1}, {1, 1, 1});
+  xfem::TetMesh ball;
+  ball.points = g.points;
+  std::vector<int> kept;
+  for (int t = 0; t < g.tets.rows(); ++t) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 4; ++i) c += g.points.row(g.tets(t, i)).transpose() / 4;
+    if (c.norm() < 0.8) kept.push_back(t);
+  }
+  ball.tets.resize(static_cast<Eigen::Index>(kept.size()), 4);
+  for (std::size_t t = 0; t < kept.size(); ++t) ball.tets.row(static_cast<Eigen::Index>(t)) = g.tets.row(kept[t]);
+  const std::vector<int> surface = xfem::boundary_nodes(ball);
+  std::map<std::array<int, 3>, int> count;
+  for (int t = 0; t < ball.tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int c = 0, i = 0; c < 4; ++c)
+        if (c != skip) f[i++] = ball.tets(t, c);
+      std::sort(f.begin(), f.end());
+      ++count[f];
+    }
+  std::set<int> expected;
+  for (const auto& [f, n] : count)
+    if (n == 1) expected.insert(f.begin(), f.end());
+  CHECK(surface == std::vector<int>(expected.begin(), expected.end()));
+  int centre = -1;
+  for (int k = 0; k < g.points.rows(); ++k)
+    if (g.points.row(k).norm() < 1e-12) centre = k;
+  REQUIRE(centre >= 0);
+  CHECK(!std::binary_search(surface.begin(), surface.end(), centre));
+  CHECK(surface.size() > 20);
+  // Nodes in no kept tet are on no face: not selected.
+  for (int k : surface) CHECK(g.points.row(k).norm() < 1.5);
+  // No tet: nothing to select, named.
+  xfem::TetMesh empty;
+  empty.points = g.points;
+  CHECK_THROWS_WITH(xfem::select_nodes(p.dirichlet[0].selector, empty, "problem.json: dirichlet[0]"),
+                    "problem.json: dirichlet[0] selects no node (the mesh has no tet)");
+}
+
+TEST_CASE("problem: a bad boundary selector gives one error line", "[problem]") {
+  xfem::Json j = beam();
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": false})");
+  CHECK(error_of(j) ==
+        "problem.json: dirichlet[0].selector.boundary must be true (the nodes of the mesh's boundary faces), got false");
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": 1})");
+  CHECK(error_of(j) ==
+        "problem.json: dirichlet[0].selector.boundary must be true (the nodes of the mesh's boundary faces), got 1");
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": "yes"})");
+  CHECK_THAT(error_of(j), Catch::Contains("selector.boundary must be true"));
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": true, "box": {"lo": [0, 0, 0], "hi": [1, 1, 1]}})");
+  CHECK(error_of(j) ==
+        "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array, group, boundary");
+  j["neumann"][0]["selector"] = xfem::Json::parse(R"({"boundary": false})");
+  j["dirichlet"][0]["selector"] = xfem::Json::parse(R"({"boundary": true})");
+  CHECK_THAT(error_of(j), Catch::StartsWith("problem.json: neumann[0].selector.boundary must be true"));
+}
+
 TEST_CASE("problem: each bad problem file gives one error line naming the item", "[problem]") {
   xfem::Json j = beam();
   SECTION("missing field") {
@@ -111,7 +192,7 @@ TEST_CASE("problem: each bad problem file gives one error line naming the item",
   }
   SECTION("two selector kinds") {
     j["dirichlet"][0]["selector"]["box"] = {{"lo", {0, 0, 0}}, {"hi", {1, 1, 1}}};
-    CHECK(error_of(j) == "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array, group");
+    CHECK(error_of(j) == "problem.json: dirichlet[0].selector must have exactly one of half_spaces, box, point_array, group, boundary");
   }
   SECTION("zero normal") {
     j["dirichlet"][0]["selector"]["half_spaces"][0]["normal"] = {0, 0, 0};

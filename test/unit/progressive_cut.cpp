@@ -121,6 +121,26 @@ TEST_CASE("progressive cut: exact Dirichlet fields and unconstrained pieces are 
                                                  "p.json", "dirichlet[1].exact");
   CHECK_THROWS_WITH(xfem::factorize_uncut(mesh, p),
                     Catch::Contains("p.json: dirichlet[1] ('lid') prescribes an exact field"));
+  // The linear exact field is the same on both sides: accepted, and a step's solution is the whole
+  // system's with the same problem (whose Dirichlet data take each node's side).
+  p = problem();
+  p.dirichlet[1].exact = xfem::parse_exact_field(
+      xfem::Json::parse(R"({"linear": {"gradient": [[0, 0, 0], [0.02, 0, 0], [0.03, -0.01, 0]], "translation": [0, 0.01, 0]}})"),
+      "p.json", "dirichlet[1].exact");
+  p.dirichlet[1].value = {};
+  const xfem::UncutBody linear = xfem::factorize_uncut(mesh, p);
+  const auto cut = partial_cut(0.55);
+  const xfem::CutSolution step = xfem::solve_cut(linear, cut);
+  const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
+  xfem::LinearSystem s = xfem::assemble_system(em, p, p.points, p.refine);
+  s.K = xfem::SparseMatrix(s.K.selfadjointView<Eigen::Lower>());
+  xfem::fix_unsupported_enrichment(s);
+  const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
+  const Eigen::VectorXd u = xfem::expand_solution(r, xfem::cholmod_solve(r.K, r.f).x, s.fixed, s.fixed_values);
+  REQUIRE(step.u.size() == u.size());
+  CHECK((step.u - u).norm() <= 1e-10 * u.norm());
+  // The lid's node at (1, 0, 2) (id 3 + 4 (0 + 4 6)) moved by the field: (0, 0.02 + 0.01, 0.03).
+  CHECK((linear.constrained.segment<3>(3 * (3 + 4 * 4 * 6)) - Eigen::Vector3d(0, 0.03, 0.03)).norm() < 1e-15);
   p = problem();
   p.dirichlet.pop_back();  // only the bottom is held: a cut through the box frees the top
   const xfem::UncutBody body = xfem::factorize_uncut(mesh, p);

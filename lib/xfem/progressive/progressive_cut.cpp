@@ -42,8 +42,10 @@ EnrichedMesh enriched_mesh(const TetMesh& mesh, const Classification& c, std::sh
 }
 
 UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering ordering) {
+  // A linear exact field is the same on both sides of a cut (u = translation + G x): its values
+  // are fixed, like a `value`'s. Every other exact field takes the node's side.
   for (std::size_t i = 0; i < problem.dirichlet.size(); ++i)
-    if (problem.dirichlet[i].exact)
+    if (problem.dirichlet[i].exact && problem.dirichlet[i].exact->kind != ExactField::Kind::Linear)
       throw Error(describe(problem, "dirichlet", i) + " prescribes an exact field, whose values depend on the cut: "
                   "a sweep needs fixed values (run the tools per step instead)");
   UncutBody body;

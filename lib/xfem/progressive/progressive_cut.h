@@ -42,8 +42,9 @@ struct UncutBody {
 };
 
 /// Assembles the uncut body's system for `problem` and factorizes K_ss. Throws xfem::Error for a
-/// Dirichlet condition with an exact field (its values depend on the node's side of the cut, so
-/// the standard block would change with the cut) and for an unconstrained body (naming the
+/// Dirichlet condition with an exact field other than "linear" (its values depend on the node's
+/// side of the cut, so the standard block would change with the cut; the linear field is the same
+/// on both sides) and for an unconstrained body (naming the
 /// condition that is missing, as xfem-solve does).
 UncutBody factorize_uncut(const TetMesh& mesh, const Problem& problem, Ordering ordering = Ordering::Metis);
 

@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "xfem/core/boundary_groups.h"
@@ -65,10 +66,16 @@ struct Node {
 };
 
 Selector parse_selector(const Node& n) {
-  n.require_object({"half_spaces", "box", "point_array", "group"});
-  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group");
+  n.require_object({"half_spaces", "box", "point_array", "group", "boundary"});
+  if (n.j.size() != 1) n.fail("must have exactly one of half_spaces, box, point_array, group, boundary");
   Selector s;
-  if (n.has("half_spaces")) {
+  if (n.has("boundary")) {
+    // Only true: "boundary": false would select nothing, or everything else, and says neither.
+    const Node b = n.at("boundary");
+    if (!b.j.is_boolean() || !b.j.get<bool>())
+      b.fail("must be true (the nodes of the mesh's boundary faces), got " + b.j.dump());
+    s.kind = Selector::Kind::Boundary;
+  } else if (n.has("half_spaces")) {
     s.kind = Selector::Kind::HalfSpaces;
     const Node list = n.at("half_spaces");
     if (list.array_size() == 0) list.fail("must list at least one plane");
@@ -481,6 +488,11 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
       throw Error(what + ": point array '" + it->first + "' must have 1 component per point");
     array = &it->second;
   }
+  if (s.kind == Selector::Kind::Boundary) {
+    std::vector<int> nodes = boundary_nodes(mesh);
+    if (nodes.empty()) throw Error(what + " selects no node (the mesh has no tet)");
+    return nodes;
+  }
   std::vector<int> nodes;
   for (Eigen::Index k = 0; k < np; ++k) {
     const Eigen::Vector3d x = mesh.points.row(k).transpose();
@@ -496,10 +508,39 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
       case Selector::Kind::Group:
         in = (*array)(k) != 0.0;
         break;
+      case Selector::Kind::Boundary:  // returned above
+        break;
     }
     if (in) nodes.push_back(static_cast<int>(k));
   }
   if (nodes.empty()) throw Error(what + " selects no node");
+  return nodes;
+}
+
+std::vector<int> boundary_nodes(const TetMesh& mesh) {
+  // Every tet's 4 faces, sorted node triples: a triple that appears once is a boundary face.
+  std::vector<std::array<int, 3>> faces;
+  faces.reserve(4 * static_cast<std::size_t>(mesh.tets.rows()));
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int c = 0, i = 0; c < 4; ++c)
+        if (c != skip) f[i++] = mesh.tets(t, c);
+      std::sort(f.begin(), f.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::vector<char> on(mesh.points.rows(), 0);
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i == 1)
+      for (int k : faces[i]) on[k] = 1;
+    i = j;
+  }
+  std::vector<int> nodes;
+  for (std::size_t k = 0; k < on.size(); ++k)
+    if (on[k]) nodes.push_back(static_cast<int>(k));
   return nodes;
 }
 

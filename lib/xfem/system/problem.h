@@ -16,7 +16,7 @@ namespace xfem {
 
 /// Which mesh nodes a boundary condition acts on (problem.json, docs/FORMATS.md).
 struct Selector {
-  enum class Kind { HalfSpaces, Box, PointArray, Group };
+  enum class Kind { HalfSpaces, Box, PointArray, Group, Boundary };
   Kind kind = Kind::HalfSpaces;
   /// HalfSpaces: node x selected when (x - point) . normal > 0 strictly for every plane (the
   /// convention of the paper's code). Normals need not be unit vectors.
@@ -24,6 +24,7 @@ struct Selector {
   Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< Box: lo <= x <= hi (closed)
   std::string array;  ///< PointArray: nodes where this point array of the mesh is nonzero; Group: the group's name,
                       ///< its nodes are where the point array group_<name> is nonzero (boundary_groups.h)
+  // Boundary ("boundary": true): the nodes of the mesh's boundary faces (boundary_nodes below).
 };
 
 /// A finite rigid motion prescribed node by node (problem.json "rotation"): the node at X moves
@@ -185,6 +186,11 @@ ExactField read_exact_field(const std::string& path);
 /// when a named point array is missing or has more than one component, or a group is unknown
 /// ("<what>: the mesh has no group 'lid' (its groups: 'fixed', 'pulled')").
 std::vector<int> select_nodes(const Selector& selector, const TetMesh& mesh, const std::string& what);
+
+/// Ids of the nodes of the mesh's boundary faces (a face of exactly one tet), increasing: the
+/// "boundary" selector. A cut is not part of the mesh, so its faces are not boundary faces; a
+/// mesh whose tets share no face (e.g. one tet) has every node on its boundary.
+std::vector<int> boundary_nodes(const TetMesh& mesh);
 
 /// Refuses a material.model other than "linear" where a tool would silently apply Hooke's law
 /// instead: throws xfem::Error "<file>: <reason>: material.model \"neo-hookean\" is not supported
