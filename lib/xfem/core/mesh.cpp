@@ -8,6 +8,29 @@
 
 namespace xfem {
 
+std::vector<std::array<int, 3>> boundary_faces(const TetMesh& mesh) {
+  // Every tet's 4 faces as sorted node triples, sorted: a triple that appears once is on the boundary.
+  std::vector<std::array<int, 3>> faces;
+  faces.reserve(4 * static_cast<std::size_t>(mesh.tets.rows()));
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int c = 0, i = 0; c < 4; ++c)
+        if (c != skip) f[i++] = mesh.tets(t, c);
+      std::sort(f.begin(), f.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::vector<std::array<int, 3>> boundary;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i == 1) boundary.push_back(faces[i]);
+    i = j;
+  }
+  return boundary;
+}
+
 double signed_volume(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                      const Eigen::Vector3d& p3) {
   return (p1 - p0).cross(p2 - p0).dot(p3 - p0) / 6.0;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <array>
 #include <Eigen/Dense>
 #include <map>
 #include <string>
@@ -40,6 +41,10 @@ struct TetMesh {
   /// field arrays region_ids and region_names (docs/FORMATS.md "Regions").
   std::map<int, std::string> region_names;
 };
+
+/// The boundary faces of `mesh` (a face of exactly one tet; a cut is not part of the mesh, so its
+/// faces are none) as sorted node triples, in increasing order.
+std::vector<std::array<int, 3>> boundary_faces(const TetMesh& mesh);
 
 /// A triangulated surface (a cut, or the boundary of a body to mesh).
 struct TriangleMesh {

@@ -58,29 +58,6 @@ void scatter_plain_tet(const EnrichedMesh& em, const Pattern& p, const std::vect
   }
 }
 
-// Every face of every tet, as sorted node triples with the tet, sorted: a face of one tet is on
-// the boundary, a face of two is shared.
-struct Face {
-  std::array<int, 3> nodes;
-  int tet;
-  bool operator<(const Face& o) const { return nodes < o.nodes || (nodes == o.nodes && tet < o.tet); }
-};
-std::vector<Face> all_faces(const TetMesh& mesh) {
-  std::vector<Face> faces;
-  faces.reserve(static_cast<std::size_t>(mesh.tets.rows()) * 4);
-  for (int t = 0; t < mesh.tets.rows(); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      Face f{{0, 0, 0}, t};
-      int c = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != skip) f.nodes[c++] = mesh.tets(t, k);
-      std::sort(f.nodes.begin(), f.nodes.end());
-      faces.push_back(f);
-    }
-  std::sort(faces.begin(), faces.end());
-  return faces;
-}
-
 }  // namespace
 
 SparseMatrix stiffness_matrix(const EnrichedMesh& em, const Lame& material, const Quadrature& rule,
@@ -171,18 +148,15 @@ Eigen::VectorXd load_vector(const EnrichedMesh& em, const Problem& problem) {
       for (int c = 0; c < 4; ++c) f.segment<3>(3 * mesh.tets(t, c)) += problem.body_force * (v / 4.0);
     }
   if (problem.neumann.empty()) return f;
-  const std::vector<Face> faces = all_faces(mesh);
+  const std::vector<std::array<int, 3>> faces = boundary_faces(mesh);
   for (std::size_t c = 0; c < problem.neumann.size(); ++c) {
     const NeumannCondition& nc = problem.neumann[c];
     const std::string what = describe(problem, "neumann", c);
     std::vector<char> selected(mesh.points.rows(), 0);
     for (int k : select_nodes(nc.selector, mesh, what)) selected[k] = 1;
     long count = 0;
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      const bool shared = (i > 0 && faces[i - 1].nodes == faces[i].nodes) ||
-                          (i + 1 < faces.size() && faces[i + 1].nodes == faces[i].nodes);
-      const auto& v = faces[i].nodes;
-      if (shared || !selected[v[0]] || !selected[v[1]] || !selected[v[2]]) continue;
+    for (const auto& v : faces) {
+      if (!selected[v[0]] || !selected[v[1]] || !selected[v[2]]) continue;
       const Eigen::Vector3d a = mesh.points.row(v[0]), b = mesh.points.row(v[1]), d = mesh.points.row(v[2]);
       const double area = 0.5 * (b - a).cross(d - a).norm();
       for (int k : v) f.segment<3>(3 * k) += nc.traction * (area / 3.0);

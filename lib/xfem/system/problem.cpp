@@ -518,26 +518,9 @@ std::vector<int> select_nodes(const Selector& s, const TetMesh& mesh, const std:
 }
 
 std::vector<int> boundary_nodes(const TetMesh& mesh) {
-  // Every tet's 4 faces, sorted node triples: a triple that appears once is a boundary face.
-  std::vector<std::array<int, 3>> faces;
-  faces.reserve(4 * static_cast<std::size_t>(mesh.tets.rows()));
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f{};
-      for (int c = 0, i = 0; c < 4; ++c)
-        if (c != skip) f[i++] = mesh.tets(t, c);
-      std::sort(f.begin(), f.end());
-      faces.push_back(f);
-    }
-  std::sort(faces.begin(), faces.end());
   std::vector<char> on(mesh.points.rows(), 0);
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j] == faces[i]) ++j;
-    if (j - i == 1)
-      for (int k : faces[i]) on[k] = 1;
-    i = j;
-  }
+  for (const auto& face : boundary_faces(mesh))
+    for (int k : face) on[k] = 1;
   std::vector<int> nodes;
   for (std::size_t k = 0; k < on.size(); ++k)
     if (on[k]) nodes.push_back(static_cast<int>(k));
