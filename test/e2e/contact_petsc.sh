@@ -72,17 +72,10 @@ solve() {  # solve <dir> <system> [options]: u.mtx, solve.json, p.mtx in <dir>
 # 1. The plane crack pressed closed (e2e.contact_closed's hydrostatic field u = e x on every face).
 "$B/xfem-mesh" -q unstructured-box --hi 0.03 0.06 0.2 --size 0.005 -o beam.vtu || fail "mesh"
 "$B/xfem-mesh" -q cut-rect --corner 0.0075 0.0125 0.1 --edge1 0.015 0 0 --edge2 0 0.035 0 -o plane.vtp || fail "cut"
-faces() {
-  local first=1
-  for box in "[-1,-1,-1] [1e-9,1,1]" "[0.029999999,-1,-1] [1,1,1]" "[-1,-1,-1] [1,1e-9,1]" \
-             "[-1,0.059999999,-1] [1,1,1]" "[-1,-1,-1] [1,1,1e-9]" "[-1,-1,0.199999999] [1,1,1]"; do
-    set -- $box
-    [ $first = 1 ] || printf ',\n'
-    first=0
-    printf '  {"selector": {"box": {"lo": %s, "hi": %s}}, "exact": {"linear": {"gradient": [[-0.005,0,0],[0,-0.005,0],[0,0,-0.005]], "translation": [0,0,0]}}}' "$1" "$2"
-  done
-}
-printf '{"material": {"E": 300e3, "nu": 0.35}, "contact": true, "dirichlet": [\n%s]}\n' "$(faces)" > hydro.json
+cat > hydro.json <<'EOF'
+{"material": {"E": 300e3, "nu": 0.35}, "contact": true, "dirichlet": [
+  {"selector": {"boundary": true}, "exact": {"linear": {"gradient": [[-0.005,0,0],[0,-0.005,0],[0,0,-0.005]]}}}]}
+EOF
 "$B/xfem-classify" -q beam.vtu --cut plane.vtp -o classified.vtu 2>/dev/null || fail "classify"
 "$B/xfem-enrich" -q classified.vtu -o enriched.vtu || fail "enrich"
 "$B/xfem-assemble" -q enriched.vtu --cut plane.vtp --problem hydro.json --format mtx -o closed || fail "assemble"
@@ -136,16 +129,7 @@ compare "inclined penny with friction" friction-cholmod friction-petsc
 "$B/xfem-mesh" -q cut-rect --corner 0.0075 0.0075 0.02 --edge1 0.025 0 0 --edge2 0 0.025 0 -o crack.vtp || fail "crack"
 "$B/xfem-classify" -q box.vtu --cut crack.vtp -o box-classified.vtu 2>/dev/null || fail "cube classify"
 "$B/xfem-enrich" -q box-classified.vtu -o box.enriched.vtu || fail "cube enrich"
-cube_faces() {  # the six faces, each with the JSON value $1
-  local first=1 value=$1
-  for box in "[-1,-1,-1] [1e-9,1,1]" "[0.039999999,-1,-1] [1,1,1]" "[-1,-1,-1] [1,1e-9,1]" \
-             "[-1,0.039999999,-1] [1,1,1]" "[-1,-1,-1] [1,1,1e-9]" "[-1,-1,0.039999999] [1,1,1]"; do
-    set -- $box "$value"
-    [ $first = 1 ] || printf ','
-    first=0
-    printf '{"selector": {"box": {"lo": %s, "hi": %s}}, %s}' "$1" "$2" "$3"
-  done
-}
+cube_faces() { printf '{"selector": {"boundary": true}, %s}' "$1"; }  # the boundary, held at the JSON value $1
 field() { echo "\"exact\": {\"linear\": {\"gradient\": [[$1,0,0],[0,$1,0],[0,0,$2]], \"translation\": [0,0,0]}}"; }
 material='"material": {"E": 300e3, "nu": 0.35, "model": "neo-hookean"}'
 printf '{%s, "load_steps": 2, "contact": true, "dirichlet": [%s]}\n' "$material" "$(cube_faces "$(field 0.02 -0.08)")" > pressed.json

@@ -57,6 +57,16 @@ xfem::ReducedSystem reduced(const xfem::EnrichedMesh& em, xfem::LinearSystem& s)
   return xfem::eliminate_dirichlet(K, s.f, s.fixed, s.fixed_values);
 }
 
+// The whole system's solution of `em` under `p`, as xfem-assemble and xfem-solve give it (the
+// reference each sweep step must equal).
+Eigen::VectorXd whole_system_solution(const xfem::EnrichedMesh& em, const xfem::Problem& p) {
+  xfem::LinearSystem s = xfem::assemble_system(em, p, p.points, p.refine);
+  s.K = xfem::SparseMatrix(s.K.selfadjointView<Eigen::Lower>());
+  xfem::fix_unsupported_enrichment(s);
+  const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
+  return xfem::expand_solution(r, xfem::cholmod_solve(r.K, r.f).x, s.fixed, s.fixed_values);
+}
+
 }  // namespace
 
 TEST_CASE("progressive cut: the original-original block of K, f and the Dirichlet data do not depend on the cut",
@@ -132,11 +142,7 @@ TEST_CASE("progressive cut: exact Dirichlet fields and unconstrained pieces are 
   const auto cut = partial_cut(0.55);
   const xfem::CutSolution step = xfem::solve_cut(linear, cut);
   const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
-  xfem::LinearSystem s = xfem::assemble_system(em, p, p.points, p.refine);
-  s.K = xfem::SparseMatrix(s.K.selfadjointView<Eigen::Lower>());
-  xfem::fix_unsupported_enrichment(s);
-  const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
-  const Eigen::VectorXd u = xfem::expand_solution(r, xfem::cholmod_solve(r.K, r.f).x, s.fixed, s.fixed_values);
+  const Eigen::VectorXd u = whole_system_solution(em, p);
   REQUIRE(step.u.size() == u.size());
   CHECK((step.u - u).norm() <= 1e-10 * u.norm());
   // The lid's node at (1, 0, 2) (id 3 + 4 (0 + 4 6)) moved by the field: (0, 0.02 + 0.01, 0.03).
@@ -388,11 +394,7 @@ TEST_CASE("progressive cut: with two materials, the Schur step and the sweep's s
     ++generation;
     const xfem::CutSolution swept = sweeping.step(cut, ids);
     const xfem::EnrichedMesh em = xfem::enriched_mesh(mesh, xfem::classify(mesh, *cut), cut);
-    xfem::LinearSystem s = xfem::assemble_system(em, p, p.points, p.refine);
-    s.K = xfem::SparseMatrix(s.K.selfadjointView<Eigen::Lower>());
-    xfem::fix_unsupported_enrichment(s);
-    const xfem::ReducedSystem r = xfem::eliminate_dirichlet(s.K, s.f, s.fixed, s.fixed_values);
-    const Eigen::VectorXd u = xfem::expand_solution(r, xfem::cholmod_solve(r.K, r.f).x, s.fixed, s.fixed_values);
+    const Eigen::VectorXd u = whole_system_solution(em, p);
     CHECK((step.u - u).norm() <= 1e-10 * u.norm());
     CHECK((swept.u - u).norm() <= 1e-10 * u.norm());
     // And it is not the one-material answer.
