@@ -4,6 +4,7 @@
 #include <string>
 
 #include "xfem/core/error.h"
+#include "xfem/core/parallel_for.h"
 #include "xfem/enrich/side_codes.h"
 #include "xfem/enrich/split_by_cuts.h"
 #include "xfem/geometry/cut_pieces.h"
@@ -66,16 +67,25 @@ CutElementSplits split_cut_elements(const EnrichedMesh& em) {
   if (!any) return out;
   if (!em.cut) throw Error("conforming integration: the mesh has cut elements but no cut surface was given");
   const std::vector<FrontSegment>& front = em.front.segments();
-  for (int t = 0; t < tets; ++t) {
-    if (em.cut_class[t] == 0) continue;
-    out.index[t] = static_cast<int>(out.first.size()) - 1;
-    TetCorners p;
-    for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
-    const std::vector<int> meeting = em.cut->triangles_meeting(p);
-    const CutPieces pieces = em.cut_class[t] == 2 ? split_by_cut(p, *em.cut, meeting)
-                                                  : split_at_front(p, *em.cut, meeting, front);
-    out.tets.insert(out.tets.end(), pieces.tets.begin(), pieces.tets.end());
-    out.side.insert(out.side.end(), pieces.side.begin(), pieces.side.end());
+  // Each cut tet is split on its own (in threads: the cut's queries are read-only), the pieces
+  // then appended in tet order, so the result does not depend on the thread count.
+  std::vector<int> cut_tets;
+  for (int t = 0; t < tets; ++t)
+    if (em.cut_class[t] != 0) cut_tets.push_back(t);
+  std::vector<CutPieces> split(cut_tets.size());
+  parallel_for(static_cast<long>(cut_tets.size()), [&](long begin, long end) {
+    for (long i = begin; i < end; ++i) {
+      const int t = cut_tets[i];
+      TetCorners p;
+      for (int c = 0; c < 4; ++c) p[c] = em.mesh.points.row(em.mesh.tets(t, c)).transpose();
+      const std::vector<int> meeting = em.cut->triangles_meeting(p);
+      split[i] = em.cut_class[t] == 2 ? split_by_cut(p, *em.cut, meeting) : split_at_front(p, *em.cut, meeting, front);
+    }
+  }, {}, 16);
+  for (std::size_t i = 0; i < cut_tets.size(); ++i) {
+    out.index[cut_tets[i]] = static_cast<int>(out.first.size()) - 1;
+    out.tets.insert(out.tets.end(), split[i].tets.begin(), split[i].tets.end());
+    out.side.insert(out.side.end(), split[i].side.begin(), split[i].side.end());
     out.first.push_back(static_cast<int>(out.tets.size()));
   }
   return out;
