@@ -16,11 +16,21 @@ namespace xfem {
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
                            FaceIntegralCache* face_cache, int near_face_points) {
+  ClosedFormWorkspace work;
+  closed_form_stiffness(em, splits, t, branch_rule, material, k, consistent_order, face_cache, near_face_points, work);
+}
+
+void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
+                           const Lame& material, Eigen::MatrixXd& k, int consistent_order,
+                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work) {
   const int n = em.size(t);
   const long base = em.offsets[t];
   const long first_branch = em.np + em.ns;
   // Columns of the non-branch functions (a) and of the branch functions (b).
-  std::vector<int> a_cols, b_cols;
+  std::vector<int>& a_cols = work.a_cols;
+  std::vector<int>& b_cols = work.b_cols;
+  a_cols.clear();
+  b_cols.clear();
   for (int c = 0; c < n; ++c)
     for (int d = 0; d < 3; ++d) (em.dofs[base + c] < first_branch ? a_cols : b_cols).push_back(3 * c + d);
   const int na = static_cast<int>(a_cols.size()), nb = static_cast<int>(b_cols.size());
@@ -29,29 +39,32 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
   const SideVolumes regions = side_volumes(em.mesh, splits, t);
   const int R = regions.size();
   const TetShape shape = tet_shape(em.mesh, t);
-  Eigen::MatrixXd A(R, na);  // row r: a_r
+  auto A = work.A.view(R, na);  // row r: a_r
   BasisAt basis;
   for (int r = 0; r < R; ++r) {
     enriched_basis(em, t, shape, regions.point[r], regions.side[r], basis);
     for (int i = 0; i < na; ++i) A(r, i) = basis.dN(a_cols[i] / 3, a_cols[i] % 3);
   }
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  auto S = work.S.view(3 * n, 3 * n);
+  S.setZero();
   // non-branch x non-branch: sum_r V_r a_r a_r^T.
   // As G^T G of the exact-piece rule (stiffness_from_gradients), with one row sqrt(V_r) a_r per region.
-  Eigen::MatrixXd Ga(R, na);
+  auto Ga = work.Ga.view(R, na);
   for (int r = 0; r < R; ++r) Ga.row(r) = std::sqrt(regions.volume[r]) * A.row(r);
-  Eigen::MatrixXd Saa = Eigen::MatrixXd::Zero(na, na);
+  auto Saa = work.Saa.view(na, na);
+  Saa.setZero();
   Saa.selfadjointView<Eigen::Lower>().rankUpdate(Ga.transpose());
   Saa.triangularView<Eigen::StrictlyUpper>() = Saa.transpose();
   for (int i = 0; i < na; ++i)
     for (int j = 0; j < na; ++j) S(a_cols[i], a_cols[j]) = Saa(i, j);
 
   if (nb > 0) {
-    Eigen::MatrixXd G;
-    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, G, near_face_points);
     const int q = branch_rule.size();
-    Eigen::MatrixXd B(q, nb);      // sqrt(w_p) b_p
-    Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(R, nb);  // row r: sum over p in r of w_p b_p
+    // b_p, then overwritten by B: row p sqrt(w_p) b_p (the branch columns only: the others are not used)
+    auto B = work.B.view(q, nb);
+    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, b_cols, B, work.tips, near_face_points);
+    auto sums = work.sums.view(R, nb);  // row r: sum over p in r of w_p b_p
+    sums.setZero();
     for (int p = 0; p < q; ++p) {
       const auto found = std::find(regions.side.begin(), regions.side.end(), branch_rule.side[p]);
       if (found == regions.side.end())
@@ -60,15 +73,17 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
       const int r = static_cast<int>(found - regions.side.begin());
       const double w = branch_rule.weights[p], sw = std::sqrt(w);
       for (int i = 0; i < nb; ++i) {
-        const double g = G(p, b_cols[i]);
+        const double g = B(p, i);
         sums(r, i) += w * g;
         B(p, i) = sw * g;
       }
     }
-    Eigen::MatrixXd Sbb = Eigen::MatrixXd::Zero(nb, nb);
+    auto Sbb = work.Sbb.view(nb, nb);
+    Sbb.setZero();
     Sbb.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());
     Sbb.triangularView<Eigen::StrictlyUpper>() = Sbb.transpose();
-    const Eigen::MatrixXd Sab = A.transpose() * sums;
+    auto Sab = work.Sab.view(na, nb);
+    Sab.noalias() = A.transpose() * sums;
     for (int i = 0; i < nb; ++i)
       for (int j = 0; j < nb; ++j) S(b_cols[i], b_cols[j]) = Sbb(i, j);
     for (int i = 0; i < na; ++i)

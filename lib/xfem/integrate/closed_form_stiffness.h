@@ -1,15 +1,25 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <Eigen/Dense>
+#include <vector>
 
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/cut_element_splits.h"
 #include "xfem/integrate/element_stiffness.h"
+#include "xfem/integrate/scratch_matrix.h"
 
 namespace xfem {
 
 class FaceIntegralCache;  // consistent_gradients.h
+
+/// closed_form_stiffness's buffers, kept by a caller that integrates many tets (one per thread):
+/// then no memory is allocated per tet (scratch_matrix.h says why that matters).
+struct ClosedFormWorkspace {
+  std::vector<int> a_cols, b_cols;
+  ScratchMatrix A, Ga, Saa, S, B, sums, Sbb, Sab;
+  std::vector<TipCoordinates> tips;
+};
 
 /// Stiffness of formula (5) of an enriched tet t, block by block, with quadrature points only
 /// where the integrand needs them (docs/METHOD.md "Integration"). With a_r the gradients of the
@@ -35,5 +45,9 @@ class FaceIntegralCache;  // consistent_gradients.h
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
                            FaceIntegralCache* face_cache = nullptr, int near_face_points = 0);
+/// The same with the caller's buffers (the same bits).
+void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
+                           const Lame& material, Eigen::MatrixXd& k, int consistent_order,
+                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work);
 
 }  // namespace xfem

@@ -328,15 +328,27 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points) {
+  gradients.resize(rule.size(), 3 * em.size(t));
+  std::vector<TipCoordinates> tips;
+  sampled_gradients(em, t, rule, consistent_order, face_cache, std::vector<int>(), gradients, tips, near_face_points);
+}
+
+void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
+                       FaceIntegralCache* face_cache, const std::vector<int>& columns,
+                       Eigen::Ref<Eigen::MatrixXd> gradients, std::vector<TipCoordinates>& tips,
+                       int near_face_points) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
-  gradients.resize(q, 3 * n);
+  const int m = columns.empty() ? 3 * n : static_cast<int>(columns.size());
+  auto column = [&](int i) { return columns.empty() ? i : columns[static_cast<std::size_t>(i)]; };
+  if (gradients.rows() != q || gradients.cols() != m)
+    throw Error("sampled gradients of tet " + std::to_string(t) + ": the output is not " + std::to_string(q) + " x " +
+                std::to_string(m));
   BasisAt b;
   const bool branch = em.branch(t);
   // The crack-tip coordinates of a branch tet's points together (CrackFront::coordinates of many
   // points): the same bits as a search of the whole front per point.
   const bool near_front = branch && em.cuts.empty() && !em.front.empty() && q > 0;
-  std::vector<TipCoordinates> tips;
   if (near_front) {
     tips.resize(q);
     em.front.coordinates(rule.x.data(), q, tips.data());
@@ -346,8 +358,7 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
       enriched_basis(em, t, shape, rule.x[p], rule.side[p], tips[p], b);
     else
       enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
-    for (int c = 0; c < n; ++c)
-      for (int a = 0; a < 3; ++a) gradients(p, 3 * c + a) = b.dN(c, a);
+    for (int i = 0; i < m; ++i) gradients(p, i) = b.dN(column(i) / 3, column(i) % 3);
   }
   // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
@@ -355,12 +366,11 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
     const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache, near_face_points);
     const double volume = w.sum();
-    for (int c = 0; c < n; ++c) {
+    for (int i = 0; i < m; ++i) {
+      const int c = column(i) / 3, a = column(i) % 3;
       if (em.dofs[em.offsets[t] + c] < em.np + em.ns) continue;
-      for (int a = 0; a < 3; ++a) {
-        const double shift = (exact(c, a) - w.dot(gradients.col(3 * c + a))) / volume;
-        gradients.col(3 * c + a).array() += shift;
-      }
+      const double shift = (exact(c, a) - w.dot(gradients.col(i))) / volume;
+      gradients.col(i).array() += shift;
     }
   }
 }

@@ -172,6 +172,15 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
 /// (branch_gradient_integrals' near_order; an experiment, bench/branch_rule_accuracy).
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, Eigen::MatrixXd& gradients, int near_face_points = 0);
+/// The same, only the columns `columns` (increasing 3c + a; empty: all of them), into `gradients`
+/// already shaped q x (their number) (e.g. a ScratchMatrix view), with `tips` a buffer for the
+/// points' crack-tip coordinates: both kept by the caller from one tet to the next, so that no
+/// memory is allocated per tet (scratch_matrix.h says why), and only the columns used are stored
+/// (the closed form needs the branch ones alone). The same bits as those columns of the above.
+void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
+                       FaceIntegralCache* face_cache, const std::vector<int>& columns,
+                       Eigen::Ref<Eigen::MatrixXd> gradients, std::vector<TipCoordinates>& tips,
+                       int near_face_points = 0);
 
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as

@@ -59,7 +59,7 @@ void stiffness_from_gradients(const Eigen::MatrixXd& G, const Lame& material, Ei
   stiffness_from_moments(S, material, k);
 }
 
-void stiffness_from_moments(const Eigen::MatrixXd& S, const Lame& material, Eigen::MatrixXd& k) {
+void stiffness_from_moments(const Eigen::Ref<const Eigen::MatrixXd>& S, const Lame& material, Eigen::MatrixXd& k) {
   const int n = static_cast<int>(S.cols() / 3);
   k.resize(3 * n, 3 * n);
   const double mu = material.mu, la = material.lambda;

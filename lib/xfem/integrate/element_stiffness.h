@@ -40,6 +40,6 @@ void stiffness_from_gradients(const Eigen::MatrixXd& G, const Lame& material, Ei
 
 /// The same from the moments S (3n x 3n, symmetric): S(3c + a, 3d + b) = integral of
 /// dPhi_c/dx_a dPhi_d/dx_b, however they were obtained (closed_form_stiffness.h sums them block by block).
-void stiffness_from_moments(const Eigen::MatrixXd& S, const Lame& material, Eigen::MatrixXd& k);
+void stiffness_from_moments(const Eigen::Ref<const Eigen::MatrixXd>& S, const Lame& material, Eigen::MatrixXd& k);
 
 }  // namespace xfem

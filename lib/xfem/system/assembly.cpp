@@ -106,7 +106,10 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
   for (long first = 0; first < static_cast<long>(enriched.size()); first += batch) {
     const long count = std::min<long>(batch, static_cast<long>(enriched.size()) - first);
     parallel_for(count, [&](long begin, long end) {
-      PointRule points;
+      // The points and the closed form's matrices are kept by each thread from one chunk to the
+      // next: allocated per tet they cost more in page faults than their arithmetic (scratch_matrix.h).
+      thread_local PointRule points;
+      thread_local ClosedFormWorkspace work;
       FaceIntegralCache faces;
       for (long i = begin; i < end; ++i) {
         const int t = enriched[static_cast<std::size_t>(first + i)];
@@ -121,7 +124,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
           const int consistent = graded ? TetRuleLayout::graded_consistent_order
                                  : fast ? TetRuleLayout::fast_consistent_order
                                  : uniform ? conforming_order - 1 : conforming_order;
-          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces);
+          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces, 0, work);
         } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
           element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
