@@ -6,6 +6,7 @@
 // those of the divergence theorem on the cut's polygons to 1e-13 of the tet's volume.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -198,4 +199,48 @@ TEST_CASE("closed_form_stiffness: with --rule fast's points the closed-form bloc
     WARN(c.name << ": " << branch_tets << " tets with branch DOFs, " << fewer << " with fewer points under --rule fast");
     CHECK((branch_tets == 0 || fewer > 0));  // the fast rule is not the default's on any of them
   }
+}
+
+TEST_CASE("closed_form_stiffness: a workspace reused from tet to tet gives the same bits as a fresh one",
+          "[closed_form_stiffness]") {
+  // The buffers keep the previous tets' entries (larger ones first, going backwards too): every
+  // entry must be written before it is read, and the branch columns alone (sampled_gradients with
+  // `columns`) must be those columns of the whole matrix, bit for bit.
+  const xfem::Lame material = xfem::lame(3e5, 0.35);
+  long branch_tets = 0, compared = 0;
+  for (const Case& c : catalogue()) {
+    if (c.name != "beam" && c.name != "organ" && c.name != "disc" && c.name != "zigzag") continue;
+    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
+    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
+    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+    std::vector<int> tets;
+    for (int t = 0; t < em.tets(); ++t)
+      if (!em.plain(t)) tets.push_back(t);
+    tets.insert(tets.end(), tets.rbegin(), tets.rend());  // forwards, then backwards
+    xfem::ClosedFormWorkspace work;
+    xfem::PointRule points;
+    Eigen::MatrixXd k_fresh, k_reused, all;
+    std::vector<xfem::TipCoordinates> tips;
+    for (const int t : tets) {
+      if (em.branch(t)) xfem::conforming_rule(em, splits, t, 3, points);
+      else points.clear();
+      xfem::closed_form_stiffness(em, splits, t, points, material, k_fresh, 3);
+      xfem::closed_form_stiffness(em, splits, t, points, material, k_reused, 3, nullptr, 0, work);
+      INFO(c.name << ": tet " << t);
+      REQUIRE(k_reused.rows() == k_fresh.rows());
+      REQUIRE(std::memcmp(k_reused.data(), k_fresh.data(), sizeof(double) * k_fresh.size()) == 0);
+      ++compared;
+      if (!em.branch(t)) continue;
+      ++branch_tets;
+      xfem::sampled_gradients(em, t, points, 3, nullptr, all);
+      const std::vector<int> columns = {1, 3 * em.size(t) - 1};
+      xfem::ScratchMatrix scratch;
+      auto some = scratch.view(points.size(), 2);
+      xfem::sampled_gradients(em, t, points, 3, nullptr, columns, some, tips);
+      for (int i = 0; i < 2; ++i)
+        for (int p = 0; p < points.size(); ++p) REQUIRE(some(p, i) == all(p, columns[i]));
+    }
+  }
+  CHECK(branch_tets > 0);
+  WARN(compared << " tets compared, " << branch_tets << " with branch DOFs");
 }
