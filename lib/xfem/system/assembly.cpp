@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <memory>
+#include <mutex>
 #include <numeric>
 
 #include "xfem/integrate/closed_form_stiffness.h"
@@ -19,6 +21,33 @@
 
 namespace xfem {
 namespace {
+
+// One chunk's buffers for the enriched tets: the rule's points and the closed form's matrices.
+struct Scratch {
+  PointRule points;
+  ClosedFormWorkspace work;
+};
+
+// The buffers of an assembly, lent to its chunks: at most one set per thread at a time, kept from
+// batch to batch (a thread_local would die with each batch's threads and fault its pages again).
+class ScratchPool {
+ public:
+  std::unique_ptr<Scratch> take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (free_.empty()) return std::make_unique<Scratch>();
+    std::unique_ptr<Scratch> s = std::move(free_.back());
+    free_.pop_back();
+    return s;
+  }
+  void give(std::unique_ptr<Scratch> s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    free_.push_back(std::move(s));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Scratch>> free_;
+};
 
 // The closed-form stiffness of a plain tet (tet_stiffness, formula (5) with constant gradients)
 // computed block by block straight into K: only the lower blocks the table names, only the lower
@@ -102,14 +131,17 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
   // computed once for its two tets when both are in the run): the runs do not depend on the
   // thread count, so neither does K, bit for bit.
   const long chunk = 32, batch = 32 * chunk;
+  ScratchPool scratches;
   std::vector<Eigen::MatrixXd> ks(static_cast<std::size_t>(std::min<long>(batch, static_cast<long>(enriched.size()))));
   for (long first = 0; first < static_cast<long>(enriched.size()); first += batch) {
     const long count = std::min<long>(batch, static_cast<long>(enriched.size()) - first);
     parallel_for(count, [&](long begin, long end) {
-      // The points and the closed form's matrices are kept by each thread from one chunk to the
-      // next: allocated per tet they cost more in page faults than their arithmetic (scratch_matrix.h).
-      thread_local PointRule points;
-      thread_local ClosedFormWorkspace work;
+      // The points and the closed form's matrices are kept for the whole assembly (the threads come
+      // and go with each batch): allocated per tet they cost more in page faults than their
+      // arithmetic (scratch_matrix.h). A chunk takes a set and gives it back.
+      std::unique_ptr<Scratch> scratch = scratches.take();
+      PointRule& points = scratch->points;
+      ClosedFormWorkspace& work = scratch->work;
       FaceIntegralCache faces;
       for (long i = begin; i < end; ++i) {
         const int t = enriched[static_cast<std::size_t>(first + i)];
@@ -132,6 +164,7 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
           element_stiffness(em, t, rule, materials.lame(t), ks[i]);
         }
       }
+      scratches.give(std::move(scratch));
     }, {}, chunk);
     for (long i = 0; i < count; ++i) scatter(em, p, outer, enriched[static_cast<std::size_t>(first + i)], ks[i], values);
     if (progress) progress(static_cast<double>(tets - static_cast<long>(enriched.size()) + first + count) / tets);
