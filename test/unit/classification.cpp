@@ -3,6 +3,7 @@
 #include "xfem/enrich/growing_classification.h"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -11,6 +12,9 @@
 #include "xfem/generate/organ_shape.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/core/error.h"
+#include "xfem/core/thread_limit.h"
+#include "xfem/enrich/split_by_cuts.h"
+#include "xfem/geometry/cut_pieces.h"
 #include "xfem/generate/unstructured_mesh.h"
 
 using xfem::CutClass;
@@ -513,4 +517,44 @@ TEST_CASE("classification: a growing cut's classifier refuses ids that do not ma
   const xfem::CutSurface moved(rectangle(-0.1, 0.5, -0.1, 1.1, 0.55));
   CHECK(growing.classify(moved, {0, 1}).cut_class == xfem::classify(mesh, moved).cut_class);
   CHECK_FALSE(growing.stats().incremental);
+}
+
+TEST_CASE("classification: the side volumes of the cut tets, split in threads, are each tet's own and do not depend "
+          "on the thread count",
+          "[classification][threads]") {
+  // A coarse organ and a curved cut (pipelines/sweep's arc, 0.05 m deep): a few hundred cut tets,
+  // split in chunks of 4 over the threads (issue 35). Each tet's volumes must be those split_by_cut
+  // gives that very tet (a wrong index would move them), and everything the same at 1 and 3 threads.
+  const xfem::TetMesh mesh = xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, 0.012);
+  xfem::BladePath path;
+  path.centre = {0, -0.09, 0.06};
+  path.radius = 0.1;
+  path.a0 = 40;
+  path.a1 = 140;
+  const xfem::CutSurface cut(xfem::cut_sweep(path, 0.05, {0, 0, -1}, 0.0, 0.006, 4.0));
+  std::vector<xfem::Classification> c;
+  std::vector<xfem::ClassificationMemory> memory(2);
+  for (int i = 0; i < 2; ++i) {
+    xfem::set_thread_limit(i == 0 ? 1 : 3);
+    xfem::ClassifyWork work;
+    c.push_back(xfem::classify_with(mesh, cut, {}, memory[i], nullptr, work));
+    CHECK(work.tets > 50);  // enough split tets for many chunks
+  }
+  INFO("split tets " << std::count(memory[1].split.begin(), memory[1].split.end(), 1));
+  xfem::set_thread_limit(0);
+  check_same(c[0], c[1]);
+  CHECK(memory[0].above == memory[1].above);
+  CHECK(memory[0].below == memory[1].below);
+  CHECK(memory[0].split == memory[1].split);
+  long split = 0;
+  for (long t = 0; t < mesh.tets.rows(); ++t) {
+    if (!memory[1].split[t]) continue;
+    ++split;
+    const xfem::CutPieces pieces = xfem::split_by_cut(xfem::tet_corners(mesh, static_cast<int>(t)), cut);
+    CHECK(memory[1].above[t] == pieces.volume_above);
+    CHECK(memory[1].below[t] == pieces.volume_below);
+  }
+  // Every completely cut tet was split (a tet the front runs through is not).
+  CHECK(c[1].counts.complete > 50);
+  CHECK(split >= c[1].counts.complete);
 }

@@ -13,6 +13,7 @@
 #include "xfem/generate/box_mesh.h"
 #include "xfem/generate/cut_generation.h"
 #include "xfem/core/error.h"
+#include "xfem/core/thread_limit.h"
 #include "xfem/io/vtk_io.h"
 
 namespace {
@@ -220,5 +221,31 @@ TEST_CASE("several cuts: configurations not handled are refused, naming them", "
     REQUIRE_THROWS_WITH(classify({xfem::cut_disc(V3(0.5, 0.5, 0.47), V3(0, 0, 1), 0.3, 4),
                                   xfem::cut_disc(V3(0.5, 0.5, 0.55), V3(0, 0, 1), 0.3, 4)}),
                         Contains("has branch-enriched nodes of cuts 0 and 1"));
+  }
+}
+
+TEST_CASE("several cuts: the cut tets split in threads give the same classification at any thread count",
+          "[several_cuts][threads]") {
+  // Two slanted planes crossing in an 8 x 8 x 8 box (hundreds of cut tets, split in chunks of 4
+  // over the threads, their volumes then added in tet order): the same at 1 and 3 threads.
+  const xfem::TetMesh mesh = xfem::box_mesh({8, 8, 8}, V3::Zero(), V3(1, 1, 1));
+  const xfem::CutSurface c0(plane(V3(0.43, -0.5, -0.5), V3(0.2, 2, 0), V3(0, 0, 2)));
+  const xfem::CutSurface c1(plane(V3(-0.5, 0.55, -0.5), V3(0, 0, 2), V3(2, -0.3, 0)));
+  std::vector<xfem::CutsClassification> c;
+  for (int n : {1, 3}) {
+    xfem::set_thread_limit(n);
+    c.push_back(xfem::classify_cuts(mesh, {&c0, &c1}));
+  }
+  xfem::set_thread_limit(0);
+  REQUIRE(c[0].products.size() == 1);
+  REQUIRE(c[1].products.size() == 1);
+  CHECK(c[0].products[0].count > 0);
+  CHECK(c[0].products[0].node == c[1].products[0].node);
+  CHECK(c[0].product_tiny == c[1].product_tiny);
+  for (int k = 0; k < 2; ++k) {
+    CHECK(c[0].cuts[k].counts.complete > 50);
+    CHECK(c[0].cuts[k].enrichment == c[1].cuts[k].enrichment);
+    CHECK(c[0].cuts[k].cut_class == c[1].cuts[k].cut_class);
+    CHECK(xfem::count_values(c[0].cuts[k].counts) == xfem::count_values(c[1].cuts[k].counts));
   }
 }

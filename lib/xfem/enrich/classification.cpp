@@ -345,7 +345,7 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
       memory.meets[i] = edge_cut[i];
     }
     tested_edges += tested;
-  }, report(0.3, 0.9));
+  }, report(0.3, 0.9), 256);  // small chunks: a small mesh's edges in threads too (each edge's answer is its own)
 
   // 2b. D1 with a round-off tolerance: a node closer to the cut than 1e-10 of the mesh's size
   //     (e.g. z = 0.10000000000000003 for a cut at z = 0.1, a mesher's midpoint) is on the cut.
@@ -422,8 +422,12 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
   memory.below.resize(T, 0.0);
   std::vector<double>& above = memory.above;
   std::vector<double>& below = memory.below;
+  //    Which tets are split is decided first, then those are split each on its own with a small
+  //    chunk (a few hundred cut tets of a mesh's thousands would otherwise fall into one or two of
+  //    the tet loop's chunks, i.e. one thread): each tet's volumes depend on that tet alone, so the
+  //    result does not depend on the thread count.
+  std::vector<char> to_split(T, 0);
   parallel_for(T, [&](long b, long e) {
-    long tested = 0;
     for (long t = b; t < e; ++t) {
       if (contact[t] == 2 || !meets[t]) {
         memory.split[t] = 0;
@@ -431,10 +435,10 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
         if (contact[t] == 2) c.cut_class[t] = CutClass::Partial;
         continue;
       }
-      TetCorners p;
-      for (int k = 0; k < 4; ++k) p[k] = mesh.points.row(mesh.tets(t, k)).transpose();
       bool known = growth && memory.split[t];
       if (known) {
+        TetCorners p;
+        for (int k = 0; k < 4; ++k) p[k] = mesh.points.row(mesh.tets(t, k)).transpose();
         Eigen::Vector3d lo = p[0], hi = p[0];
         double h = 0;
         for (int k = 0; k < 4; ++k) {
@@ -444,13 +448,27 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
         }
         known = !growth->near(lo, hi, h * (1 + 1e-9) + on_cut_tolerance);  // D1's snapping moves the cut that far
       }
-      if (!known) {
-        const CutPieces pieces = split_by_cut(p, cut);
-        above[t] = pieces.volume_above;
-        below[t] = pieces.volume_below;
-        memory.split[t] = 1;
-        ++tested;
-      }
+      to_split[t] = !known;
+    }
+  });
+  std::vector<long> split_list;
+  for (long t = 0; t < T; ++t)
+    if (to_split[t]) split_list.push_back(t);
+  parallel_for(static_cast<long>(split_list.size()), [&](long b, long e) {
+    for (long i = b; i < e; ++i) {
+      const long t = split_list[i];
+      TetCorners p;
+      for (int k = 0; k < 4; ++k) p[k] = mesh.points.row(mesh.tets(t, k)).transpose();
+      const CutPieces pieces = split_by_cut(p, cut);
+      above[t] = pieces.volume_above;
+      below[t] = pieces.volume_below;
+      memory.split[t] = 1;
+    }
+  }, {}, 4);
+  tested_tets += static_cast<long>(split_list.size());
+  parallel_for(T, [&](long b, long e) {
+    for (long t = b; t < e; ++t) {
+      if (contact[t] == 2 || !meets[t]) continue;
       // Separated: some node's sign function lives in the tet (volume on the side opposite to the
       // node's own: across the cut, or below a node lying on it, which has side +1). A tet the
       // front only touches (all its nodes branch enriched) counts as separated only with volume
@@ -470,7 +488,6 @@ Classification classify_with(const TetMesh& mesh, const CutSurface& cut, const C
       const bool both = above[t] > 0 && below[t] > 0;
       if (contact[t] == 1 ? both || opposite_behind_front : opposite) c.cut_class[t] = CutClass::Complete;
     }
-    tested_tets += tested;
   });
 
   // 6. Enrichment. Branch: every node whose star (the tets around it) holds the front in its inside:
