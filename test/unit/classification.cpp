@@ -60,6 +60,17 @@ double front_length(const xfem::CrackFront& f) {
   return l;
 }
 
+// pipelines/sweep's blade: an arc of radius 0.1 m over the top of the organ, 0.05 m deep, its
+// triangles timed along the sweep.
+xfem::TriangleMesh sweep_blade() {
+  xfem::BladePath path;
+  path.centre = {0, -0.09, 0.06};
+  path.radius = 0.1;
+  path.a0 = 40;
+  path.a1 = 140;
+  return xfem::cut_sweep(path, 0.05, {0, 0, -1}, 0.0, 0.006, 4.0);
+}
+
 }  // namespace
 
 TEST_CASE("classification: a tet cut completely with a 1|3 split", "[classification]") {
@@ -477,12 +488,7 @@ TEST_CASE("classification: an organ's growing cut classified incrementally equal
   // the classifier keeps each point's distance to the cut and judges its side anew only where a
   // new triangle comes as close (issue 35).
   const xfem::TetMesh mesh = xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, 0.012);
-  xfem::BladePath path;
-  path.centre = {0, -0.09, 0.06};
-  path.radius = 0.1;
-  path.a0 = 40;
-  path.a1 = 140;
-  const xfem::TriangleMesh sweep = xfem::cut_sweep(path, 0.05, {0, 0, -1}, 0.0, 0.006, 4.0);
+  const xfem::TriangleMesh sweep = sweep_blade();
   const std::vector<double> times = xfem::cut_times(sweep, "sweep");
   const std::vector<double> t = xfem::step_times(times, 12);
   xfem::GrowingCutClassifier growing(mesh);
@@ -526,12 +532,7 @@ TEST_CASE("classification: the side volumes of the cut tets, split in threads, a
   // split in chunks of 4 over the threads (issue 35). Each tet's volumes must be those split_by_cut
   // gives that very tet (a wrong index would move them), and everything the same at 1 and 3 threads.
   const xfem::TetMesh mesh = xfem::implicit_mesh(xfem::organ_function, xfem::organ_bounding_radius, 0.012);
-  xfem::BladePath path;
-  path.centre = {0, -0.09, 0.06};
-  path.radius = 0.1;
-  path.a0 = 40;
-  path.a1 = 140;
-  const xfem::CutSurface cut(xfem::cut_sweep(path, 0.05, {0, 0, -1}, 0.0, 0.006, 4.0));
+  const xfem::CutSurface cut(sweep_blade());
   std::vector<xfem::Classification> c;
   std::vector<xfem::ClassificationMemory> memory(2);
   for (int i = 0; i < 2; ++i) {
