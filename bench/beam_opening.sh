@@ -9,6 +9,8 @@
 # integration time (xfem-assemble's own). Usage:
 #   bench/beam_opening.sh BIN "SIZES" "RULES" [SCRATCH]
 #   e.g. bench/beam_opening.sh build/tools "0.01 0.007 0.005 0.004" "--order=3 --rule=graded"
+# A size grid:AxBxC is the structured grid of the study's X-FEM family (xfem-mesh box --cells A B C),
+# whose nodes lie in the front's plane x = 0.015: e.g. "grid:2x4x13 grid:4x8x25".
 # (a rule's options joined by '=' instead of spaces, split again here).
 set -euo pipefail
 bin=$1 sizes=$2 rules=$3 scratch=${4:-$(mktemp -d)}
@@ -31,7 +33,10 @@ opening() {  # opening <values.csv> <row pair 0..2>: uz above - uz below
 printf "%-7s %-28s %12s %9s %12s %9s %12s %9s %11s %8s\n" size rule "mouth mm" "err" "front1 mm" "err" "front2 mm" "err" "RMS m" "enr s"
 for h in $sizes; do
   [ -f beam-$h-enriched.vtu ] || {
-    "$bin/xfem-mesh" -q unstructured-box --hi 0.03 0.06 0.2 --size "$h" -o beam-$h.vtu
+    case $h in
+      grid:*) "$bin/xfem-mesh" -q box --cells $(echo "${h#grid:}" | tr x " ") --hi 0.03 0.06 0.2 -o beam-$h.vtu ;;  # e.g. grid:2x4x13
+      *) "$bin/xfem-mesh" -q unstructured-box --hi 0.03 0.06 0.2 --size "$h" -o beam-$h.vtu ;;
+    esac
     "$bin/xfem-classify" -q beam-$h.vtu --cut cut.vtp -o beam-$h-classified.vtu
     "$bin/xfem-enrich" -q beam-$h-classified.vtu -o beam-$h-enriched.vtu
   }

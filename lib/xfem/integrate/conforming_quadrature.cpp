@@ -29,6 +29,36 @@ constexpr double kNear = 1.0;
 constexpr int kMaxLevels = 8;
 constexpr int kMaxLevelsFar = 8;
 
+// A front touching an edge this close to one of its ends (as a fraction of the edge) counts as
+// touching at that end: no split into a sliver.
+constexpr double kTouchMargin = 1e-3;
+
+// Where the front touches the edge pq, as the fraction t along pq of the point of pq closest to
+// the front's nearest segment; -1 when the front stays farther than `within` from pq, runs parallel
+// to it, or touches it within `margin` of an end.
+double front_touch(const CrackFront& front, const CrackFront::Near& near, const Eigen::Vector3d& p,
+                   const Eigen::Vector3d& q, double within, double margin) {
+  const Eigen::Vector3d d1 = q - p;
+  double best = std::numeric_limits<double>::infinity(), at = -1;
+  for (const int k : near.segments) {
+    const FrontSegment& f = front.segments()[k];
+    // The closest points of the segments p + s d1 and f.p0 + u d2 (Ericson, Real-Time Collision
+    // Detection 5.1.9), both parameters clamped to [0, 1].
+    const Eigen::Vector3d d2 = f.p1 - f.p0, r = p - f.p0;
+    const double a = d1.squaredNorm(), e = d2.squaredNorm(), b = d1.dot(d2), c = d1.dot(r), g = d2.dot(r);
+    const double denom = a * e - b * b;
+    if (!(a > 0) || !(e > 0) || !(denom > 1e-12 * a * e)) continue;  // parallel: not a point touch
+    double s = std::clamp((b * g - c * e) / denom, 0.0, 1.0);
+    double u = (b * s + g) / e;
+    if (u < 0) u = 0, s = std::clamp(-c / a, 0.0, 1.0);
+    else if (u > 1) u = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+    const double dist = (p + s * d1 - f.p0 - u * d2).norm();
+    if (dist < best) best = dist, at = s;
+  }
+  if (!(best <= within) || at < margin || at > 1 - margin) return -1;
+  return at;
+}
+
 }  // namespace
 
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
@@ -119,18 +149,30 @@ TetRuleLayout TetRuleLayout::uniform(int n) {
   // (order 3, the default: 1 level at the front, none away from it; order 7 and up: 8 and 8).
   l.near_levels = std::min(kMaxLevels, (n - 2) * (n - 2));
   l.far_levels = std::min(kMaxLevelsFar, std::max(0, 2 * (n - 3)));
+  l.split_at_touch = false;
   return l;
 }
 
 TetRuleLayout TetRuleLayout::of_order(int n) {
   TetRuleLayout l = uniform(n);
-  l.along = std::max(1, n - 2);
-  l.across = std::max(2, n - 1);
+  l.split_at_touch = true;
+  // At least 2 points along the front and 3 in the angle: with 1 and 2 (the default until the
+  // second session of issue 35's rule work) the pieces at the front held the beam's worst tets and
+  // its opening behind the front was 0.2-0.4 % off order 8 (docs/PERFORMANCE.md).
+  l.along = std::max(2, n - 2);
+  l.across = std::max(3, n - 1);
   l.far = n + 1;
   l.far_squared = false;
   l.distant = std::max(2, n - 1);
   l.distant_ratio = 1.0;
-  if (n <= 3) l.near_levels = l.far_levels = 0;
+  if (n <= 3) {
+    l.near_levels = l.far_levels = 0;
+    // Beyond one longest edge from the front the symmetric 4-point rule (degree 2) instead of the
+    // collapsed 2^3: as accurate there, and it pays for the points added at the front.
+    l.remote = 4;
+    l.remote_ratio = 1.0;
+    l.remote_symmetric = true;
+  }
   return l;
 }
 
@@ -186,13 +228,11 @@ TetRuleLayout TetRuleLayout::fast() {
 
 TetRuleLayout TetRuleLayout::graded() {
   // The rule of order 3 with the front's pieces resolved further (measured on the beam's openings
-  // against order 8, docs/PERFORMANCE.md): 3 points in the angle instead of 2 and one bisection of
-  // the pieces with a vertex on the front that the front passes close to; one bisection of the
-  // pieces without a vertex on it while the front is nearer than half their size. The mouth opening
-  // then stays within 0.05 % of order 8 at every size of the beam study (the default's does at 0.005
-  // only), at about 1.6x the default's points.
+  // against order 8, docs/PERFORMANCE.md): one bisection of the pieces with a vertex on the front
+  // that the front passes close to; one bisection of the pieces without a vertex on it while the
+  // front is nearer than half their size. (Its third point in the angle is the default's since the
+  // eleventh part of issue 35.)
   TetRuleLayout l = of_order(3);
-  l.across = 3;
   l.near_levels = 1;
   l.far_levels = 1;
   return l;
@@ -231,6 +271,27 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     int on[4], count = 0;
     for (int m = 0; m < 4; ++m)
       if (front.distance(p[m], near) <= kOnFront * longest) on[count++] = m;
+    if (layout.split_at_touch && count < 2 && level < kMaxLevels) {
+      // The front touches an edge at an interior point, not at a vertex of this piece (e.g. a tet
+      // beside the cut whose edge the front pierces, on a mesh with nodes in the front's plane): the
+      // integrand is singular at that point, which no rule collapsed onto a whole edge resolves.
+      // Split the edge there: in both halves the point is a vertex on the front (the vertex rule's
+      // collapse; with a vertex of the piece already on the front, the edge rule's edge).
+      for (const auto& e : kEdges) {
+        const int i = e[0], j = e[1];
+        if (count == 1 && (on[0] == i || on[0] == j)) continue;
+        const double t = front_touch(front, near, p[i], p[j], kOnFront * longest, kTouchMargin);
+        if (t < 0) continue;
+        const Eigen::Vector3d x = p[i] + t * (p[j] - p[i]);
+        std::array<Eigen::Vector3d, 4> q = p;
+        q[i] = x;
+        append_tet_rule(q, front, near, layout, side, out, level + 1);
+        q = p;
+        q[j] = x;
+        append_tet_rule(q, front, near, layout, side, out, level + 1);
+        return;
+      }
+    }
     if (count == 1) {
       // Singular at vertex a; nearly singular in the direction of the face opposite it when the
       // front line passes close to that face: split the face's longest edge.

@@ -98,6 +98,10 @@ struct TetRuleLayout {
   /// append_symmetric_tet_rule) instead of the collapsed remote^3 rule: there the integrand is
   /// smooth on the piece's scale, and a symmetric rule reaches a higher degree with fewer points.
   bool remote_symmetric = false;
+  /// A piece whose edge the front touches at an interior point (not at one of its vertices) is
+  /// split there first, so that the point becomes a vertex of the rules' collapse (of_order(n);
+  /// uniform(n) keeps the rule before, which collapses onto the nearest whole edge).
+  bool split_at_touch = true;
   /// The rule of order n before issue 35: n points in every direction, s = sigma^2 everywhere,
   /// bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it.
   static TetRuleLayout uniform(int n);
@@ -105,17 +109,20 @@ struct TetRuleLayout {
   /// docs/PERFORMANCE.md): where the error of uniform(n) is and where its points are wasted.
   ///  - Pieces without a vertex on the front (bounded integrand, the front near): a plain collapsed
   ///    rule (s = sigma) of n + 1 points per direction at the edge nearest to the front, n - 1
-  ///    (at least 2) when the front is farther than the piece's longest edge. The sigma^2 map of
-  ///    uniform(n) made a cubic integrand degree 11 in sigma; this is where its error was.
-  ///  - Pieces with an edge on the front: n points in sigma, n - 2 (at least 1) along the front
-  ///    (the integrand is smooth along it, the front segments short), n - 1 (at least 2) in the
-  ///    angle; with a vertex on it: n in sigma, n - 1 (at least 2) in each other direction.
+  ///    (at least 2) when the front is farther than the piece's longest edge (n <= 3: there the
+  ///    symmetric 4-point rule). The sigma^2 map of uniform(n) made a cubic integrand degree 11 in
+  ///    sigma; this is where its error was.
+  ///  - Pieces with an edge on the front: n points in sigma, n - 2 (at least 2) along the front
+  ///    (the integrand is smooth along it), n - 1 (at least 3) in the angle; with a vertex on it:
+  ///    n in sigma, n - 1 (at least 3) in each other direction.
+  ///  - A piece whose edge the front touches at an interior point is first split there
+  ///    (split_at_touch).
   ///  - Bisection as uniform(n) from order 4 up, none below (at order 3 it moved the error of
   ///    uniform(3) by nothing measurable and cost 1.8x the points).
   static TetRuleLayout of_order(int n);
-  /// The graded rule (integration.rule "graded"): of_order(3) with 3 points in the angle around the
-  /// front, the pieces with a vertex on the front bisected once where the front passes close to the
-  /// part they resolve, the others once while the front is nearer than half their size.
+  /// The graded rule (integration.rule "graded"): of_order(3) with the pieces with a vertex on the
+  /// front bisected once where the front passes close to the part they resolve, the others once
+  /// while the front is nearer than half their size.
   static TetRuleLayout graded();
   /// The order whose consistent shift the graded rule takes (consistent_face_points: 4 per direction).
   static constexpr int graded_consistent_order = 3;
