@@ -141,11 +141,25 @@ double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& 
 TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double s, bool inside,
                                        const Eigen::Vector3d& x) {
   const int np = static_cast<int>(ch.points.size());
-  const Eigen::Vector3d d = ch.points[(seg + 1) % np] - ch.points[seg];
+  const Eigen::Vector3d& p0 = ch.points[seg];
+  const Eigen::Vector3d& p1 = ch.points[(seg + 1) % np];
+  const Eigen::Vector3d d = p1 - p0;
   const double len = d.norm();
-  const Eigen::Vector3d P = ch.position(s);
-  Eigen::Vector3d c, b;
-  ch.frame(s, c, b);
+  // The foot's fraction along its segment as FrontPolyline::position and ::frame find it (s lies in
+  // [arc[seg], arc[seg] + len]: where their search would take the next segment, s is that segment's
+  // start, and both give the same bits at the shared vertex), without their search: this runs for
+  // every integration point of a branch-enriched tet.
+  const double start = ch.arc[seg];
+  const double end = seg + 1 < static_cast<int>(ch.arc.size()) ? ch.arc[seg + 1] : ch.length;
+  const double f = end > start ? std::clamp((s - start) / (end - start), 0.0, 1.0) : 0.0;
+  const Eigen::Vector3d P = (1 - f) * p0 + f * p1;
+  // The frame interpolated at f, operation for operation as FrontPolyline::frame: c = c~ / |c~|
+  // with c~ = (1 - f) c0 + f c1, b = beta / |beta| with beta = b~ - (b~ . c) c, b~ likewise.
+  Eigen::Vector3d c0, b0, c1, b1;
+  cached_vertex_frame(ch, seg, c0, b0);
+  cached_vertex_frame(ch, seg + 1, c1, b1);
+  const Eigen::Vector3d c_tilde = (1 - f) * c0 + f * c1, c = c_tilde.normalized();
+  const Eigen::Vector3d b_tilde = (1 - f) * b0 + f * b1, beta = b_tilde - b_tilde.dot(c) * c, b = beta.normalized();
   const Eigen::Vector3d a = b.cross(c), v = x - P;
   TipCoordinates out;
   out.xa = a.dot(v);
@@ -155,14 +169,16 @@ TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double 
   if (inside) {
     // P and the frame move with s(x): grad xa = a + (a'(s) . v - a . u) grad s, likewise xb, with
     // u = P'(s) the segment's direction and, from g(s(x), x) = 0, grad s = c / (u . c - v . c'(s)).
-    // The frame's derivative by a central difference inside the segment.
+    // The frame's derivative in closed form (df/ds = 1 / len), the derivative of a normalisation
+    // y / |y| being (I - y^ y^T) y' / |y|.
     const Eigen::Vector3d u = d / len;
-    const double h = 1e-6 * len, lo = std::max(ch.arc[seg], s - h), hi = std::min(ch.arc[seg] + len, s + h);
-    Eigen::Vector3d c_lo, b_lo, c_hi, b_hi;
-    ch.frame(lo, c_lo, b_lo);
-    ch.frame(hi, c_hi, b_hi);
-    const Eigen::Vector3d da = (b_hi.cross(c_hi) - b_lo.cross(c_lo)) / (hi - lo), db = (b_hi - b_lo) / (hi - lo),
-                          dc = (c_hi - c_lo) / (hi - lo);
+    const Eigen::Vector3d dc_tilde = (c1 - c0) / len, db_tilde = (b1 - b0) / len;
+    const Eigen::Vector3d dc = (dc_tilde - c.dot(dc_tilde) * c) / c_tilde.norm();
+    const Eigen::Vector3d dbeta = db_tilde - (db_tilde.dot(c) + b_tilde.dot(dc)) * c - b_tilde.dot(c) * dc;
+    const Eigen::Vector3d db = (dbeta - b.dot(dbeta) * b) / beta.norm();
+    // (b x c') . v vanishes at the foot (c' lies in span(a, b), so b x c' is along c, and c . v = 0
+    // there): kept for a = b x c's derivative in full.
+    const Eigen::Vector3d da = db.cross(c) + b.cross(dc);
     const Eigen::Vector3d grad_s = c / (u.dot(c) - v.dot(dc));
     out.grad.row(0) += (da.dot(v) - a.dot(u)) * grad_s.transpose();
     out.grad.row(1) += (db.dot(v) - b.dot(u)) * grad_s.transpose();
