@@ -179,6 +179,16 @@ std::vector<int> CutSurface::sides(const Points& points, long begin, long end) c
   return out;
 }
 
+void CutSurface::sides(const Eigen::Vector3d* points, int count, int* out) const {
+  const Impl& m = *impl_;
+  Tree::Point_and_primitive_id hint;
+  for (int i = 0; i < count; ++i) {
+    const Point q = to_cgal(points[i]);
+    hint = i == 0 ? m.tree.closest_point_and_primitive(q) : m.tree.closest_point_and_primitive(q, hint);
+    out[i] = m.side(points[i], static_cast<int>(hint.second - m.triangles.cbegin()));
+  }
+}
+
 int CutSurface::Impl::side(const Eigen::Vector3d& x, int f) const {
   const Impl& m = *this;
   const int v[3] = {m.mesh.triangles(f, 0), m.mesh.triangles(f, 1), m.mesh.triangles(f, 2)};
