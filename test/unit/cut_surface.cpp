@@ -142,7 +142,7 @@ TEST_CASE("cut_surface: a surface without triangles is an error", "[cut_surface]
   CHECK_THROWS_AS(xfem::CutSurface(empty), xfem::Error);
 }
 
-TEST_CASE("cut_surface: sides of a few points close together equal side() of each", "[cut_surface]") {
+TEST_CASE("cut_surface: sides of a few points close together, and side at a given closest point, equal side()", "[cut_surface]") {
   // A wavy cut of 800 triangles; clusters of 2 to 12 points (as the centroids of one tet's pieces)
   // around it and beyond its edges, where the side is judged at edge and vertex pseudo-normals.
   const xfem::CutSurface cut(xfem::cut_sine({0, 0}, {1, 1}, 0.5, 0.1, 0.4, {20, 20}));
@@ -158,10 +158,12 @@ TEST_CASE("cut_surface: sides of a few points close together equal side() of eac
     cut.sides(points.data(), static_cast<int>(points.size()), sides.data());
     for (std::size_t i = 0; i < points.size(); ++i) {
       REQUIRE(sides[i] == cut.side(points[i]));
+      REQUIRE(cut.side(points[i], cut.closest(points[i])) == sides[i]);  // judged at a closest point given
       (sides[i] > 0 ? above : below) += 1;
     }
   }
   CHECK(above > 500);
   CHECK(below > 500);
   cut.sides(nullptr, 0, nullptr);  // no points: nothing asked
+  CHECK_THROWS_WITH(cut.side({0, 0, 0}, xfem::CutSurface::Closest{}), Catch::Contains("out of range"));
 }

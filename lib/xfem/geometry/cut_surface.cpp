@@ -165,6 +165,12 @@ CutSurface::Closest CutSurface::closest(const Eigen::Vector3d& x) const {
 
 int CutSurface::side(const Eigen::Vector3d& x) const { return impl_->side(x, closest(x).triangle); }
 
+int CutSurface::side(const Eigen::Vector3d& x, const Closest& closest) const {
+  if (closest.triangle < 0 || closest.triangle >= static_cast<int>(impl_->normals.size()))
+    throw Error("cut surface: side judged at triangle " + std::to_string(closest.triangle) + ", out of range");
+  return impl_->side(x, closest.triangle);
+}
+
 std::vector<int> CutSurface::sides(const Points& points, long begin, long end) const {
   const Impl& m = *impl_;
   std::vector<int> out;

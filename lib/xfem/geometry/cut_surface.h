@@ -33,6 +33,9 @@ class CutSurface {
   /// judged at the closest cut point (with the angle-weighted pseudo-normal where that point is on
   /// an edge or vertex of the cut, so that curved cuts give one answer). A point on the cut is +1.
   int side(const Eigen::Vector3d& x) const;
+  /// side(x), bit for bit, judged at `closest` = closest(x), for a caller that has it: one search
+  /// instead of two.
+  int side(const Eigen::Vector3d& x, const Closest& closest) const;
 
   /// side() of rows begin..end-1 of `points`, in order. Same answers, several times faster for
   /// spatially coherent points such as a mesh's nodes: each search starts from the previous row's
