@@ -3,8 +3,11 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "xfem/core/error.h"
+#include "xfem/generate/cut_generation.h"
 
 namespace {
 
@@ -137,4 +140,30 @@ TEST_CASE("cut_surface: boundary edges follow their triangle's direction", "[cut
 TEST_CASE("cut_surface: a surface without triangles is an error", "[cut_surface]") {
   xfem::TriangleMesh empty;
   CHECK_THROWS_AS(xfem::CutSurface(empty), xfem::Error);
+}
+
+TEST_CASE("cut_surface: sides of a few points close together, and side at a given closest point, equal side()", "[cut_surface]") {
+  // A wavy cut of 800 triangles; clusters of 2 to 12 points (as the centroids of one tet's pieces)
+  // around it and beyond its edges, where the side is judged at edge and vertex pseudo-normals.
+  const xfem::CutSurface cut(xfem::cut_sine({0, 0}, {1, 1}, 0.5, 0.1, 0.4, {20, 20}));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int above = 0, below = 0;
+  for (int cluster = 0; cluster < 500; ++cluster) {
+    const Eigen::Vector3d at(0.5 + 0.6 * u(rng), 0.5 + 0.6 * u(rng), 0.5 + 0.15 * u(rng));
+    const double size = cluster % 2 ? 0.01 : 0.05;
+    std::vector<Eigen::Vector3d> points(2 + cluster % 11);
+    for (auto& x : points) x = at + size * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    std::vector<int> sides(points.size(), 0);
+    cut.sides(points.data(), static_cast<int>(points.size()), sides.data());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      REQUIRE(sides[i] == cut.side(points[i]));
+      REQUIRE(cut.side(points[i], cut.closest(points[i])) == sides[i]);  // judged at a closest point given
+      (sides[i] > 0 ? above : below) += 1;
+    }
+  }
+  CHECK(above > 500);
+  CHECK(below > 500);
+  cut.sides(nullptr, 0, nullptr);  // no points: nothing asked
+  CHECK_THROWS_WITH(cut.side({0, 0, 0}, xfem::CutSurface::Closest{}), Catch::Contains("out of range"));
 }

@@ -98,7 +98,8 @@ namespace {
 void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 
-// Where x's normal plane meets segment i of a chain, as the fraction f in [0, 1] along it, or -1
+// Where x's normal plane meets the chain segment p_i -> p_j (vertex tangents c_i, c_j), as the
+// fraction f in [0, 1] along it, or -1
 // if it does not. Along the segment P(f) = p_i + f d and the tangent is c(f) = c~(f) / |c~(f)|
 // with c~(f) = c_i + f (c_j - c_i) (FrontPolyline::frame), so g(f) = (x - P(f)) . c(f) has the
 // sign of the quadratic h(f) = (w - f d) . (c_i + f e), w = x - p_i, e = c_j - c_i. Solved in
@@ -106,16 +107,13 @@ void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eig
 // bisection it replaces dominated xfem-assemble on curved fronts. As before, a segment whose ends
 // have the same strict sign of g holds no foot (its two roots, if any, belong to a fold of the
 // normal planes beyond the front's radius of curvature).
-double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& x) {
-  const int j = (i + 1) % static_cast<int>(ch.points.size());
-  Eigen::Vector3d ci, cj, b;
-  cached_vertex_frame(ch, i, ci, b);
-  cached_vertex_frame(ch, i + 1, cj, b);
-  const Eigen::Vector3d w = x - ch.points[i], d = ch.points[j] - ch.points[i], e = cj - ci;
-  const double h0 = w.dot(ci), h1 = (x - ch.points[j]).dot(cj);
+double normal_plane_root(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& ci,
+                         const Eigen::Vector3d& cj, const Eigen::Vector3d& x) {
+  const double h0 = (x - pi).dot(ci), h1 = (x - pj).dot(cj);
   if ((h0 > 0 && h1 > 0) || (h0 < 0 && h1 < 0)) return -1.0;
   if (h0 == 0) return 0.0;
   if (h1 == 0) return 1.0;
+  const Eigen::Vector3d w = x - pi, d = pj - pi, e = cj - ci;
   const double A = h0, B = w.dot(e) - d.dot(ci), C = -d.dot(e);  // h(f) = A + B f + C f^2
   // h changes sign on [0, 1], so exactly one root lies there; the stable pair of formulas finds
   // both roots of the quadratic without cancellation, and the one in [0, 1] is kept.
@@ -135,17 +133,44 @@ double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& 
   return f;
 }
 
+// The same on segment i of a chain (its vertices' interpolated tangents, FrontPolyline::frame).
+double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& x) {
+  Eigen::Vector3d ci, cj, b;
+  cached_vertex_frame(ch, i, ci, b);
+  cached_vertex_frame(ch, i + 1, cj, b);
+  return normal_plane_root(ch.points[i], ch.points[(i + 1) % static_cast<int>(ch.points.size())], ci, cj, x);
+}
+
 // The crack-tip coordinates of x and their gradients given its foot: arc length s on segment seg
 // of chain ch, `inside` whether the foot moves with x (a normal-plane foot strictly inside the
 // chain).
 TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double s, bool inside,
                                        const Eigen::Vector3d& x) {
   const int np = static_cast<int>(ch.points.size());
-  const Eigen::Vector3d d = ch.points[(seg + 1) % np] - ch.points[seg];
+  const Eigen::Vector3d& p0 = ch.points[seg];
+  const Eigen::Vector3d& p1 = ch.points[(seg + 1) % np];
+  const Eigen::Vector3d d = p1 - p0;
   const double len = d.norm();
-  const Eigen::Vector3d P = ch.position(s);
-  Eigen::Vector3d c, b;
-  ch.frame(s, c, b);
+  // The foot's fraction along its segment as FrontPolyline::position and ::frame find it (s lies in
+  // [arc[seg], arc[seg] + len]: where their search would take the next segment, s is that segment's
+  // start, and both give the same bits at the shared vertex), without their search: this runs for
+  // every integration point of a branch-enriched tet.
+  const double start = ch.arc[seg];
+  const double end = seg + 1 < static_cast<int>(ch.arc.size()) ? ch.arc[seg + 1] : ch.length;
+  const double f = end > start ? std::clamp((s - start) / (end - start), 0.0, 1.0) : 0.0;
+  const Eigen::Vector3d P = (1 - f) * p0 + f * p1;
+  // The frame interpolated at f, operation for operation as FrontPolyline::frame: c = c~ / |c~|
+  // with c~ = (1 - f) c0 + f c1, b = beta / |beta| with beta = b~ - (b~ . c) c, b~ likewise.
+  Eigen::Vector3d c0, b0, c1, b1;
+  cached_vertex_frame(ch, seg, c0, b0);
+  cached_vertex_frame(ch, seg + 1, c1, b1);
+  // Each norm taken once, for the frame and its derivative (v / |v| is what normalized() computes).
+  const Eigen::Vector3d c_tilde = (1 - f) * c0 + f * c1;
+  const double c_norm = c_tilde.norm();
+  const Eigen::Vector3d c = c_norm > 0 ? (c_tilde / c_norm).eval() : c_tilde;
+  const Eigen::Vector3d b_tilde = (1 - f) * b0 + f * b1, beta = b_tilde - b_tilde.dot(c) * c;
+  const double beta_norm = beta.norm();
+  const Eigen::Vector3d b = beta_norm > 0 ? (beta / beta_norm).eval() : beta;
   const Eigen::Vector3d a = b.cross(c), v = x - P;
   TipCoordinates out;
   out.xa = a.dot(v);
@@ -155,14 +180,16 @@ TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double 
   if (inside) {
     // P and the frame move with s(x): grad xa = a + (a'(s) . v - a . u) grad s, likewise xb, with
     // u = P'(s) the segment's direction and, from g(s(x), x) = 0, grad s = c / (u . c - v . c'(s)).
-    // The frame's derivative by a central difference inside the segment.
+    // The frame's derivative in closed form (df/ds = 1 / len), the derivative of a normalisation
+    // y / |y| being (I - y^ y^T) y' / |y|.
     const Eigen::Vector3d u = d / len;
-    const double h = 1e-6 * len, lo = std::max(ch.arc[seg], s - h), hi = std::min(ch.arc[seg] + len, s + h);
-    Eigen::Vector3d c_lo, b_lo, c_hi, b_hi;
-    ch.frame(lo, c_lo, b_lo);
-    ch.frame(hi, c_hi, b_hi);
-    const Eigen::Vector3d da = (b_hi.cross(c_hi) - b_lo.cross(c_lo)) / (hi - lo), db = (b_hi - b_lo) / (hi - lo),
-                          dc = (c_hi - c_lo) / (hi - lo);
+    const Eigen::Vector3d dc_tilde = (c1 - c0) / len, db_tilde = (b1 - b0) / len;
+    const Eigen::Vector3d dc = (dc_tilde - c.dot(dc_tilde) * c) / c_norm;
+    const Eigen::Vector3d dbeta = db_tilde - (db_tilde.dot(c) + b_tilde.dot(dc)) * c - b_tilde.dot(c) * dc;
+    const Eigen::Vector3d db = (dbeta - b.dot(dbeta) * b) / beta_norm;
+    // (b x c') . v vanishes at the foot (c' lies in span(a, b), so b x c' is along c, and c . v = 0
+    // there): kept for a = b x c's derivative in full.
+    const Eigen::Vector3d da = db.cross(c) + b.cross(dc);
     const Eigen::Vector3d grad_s = c / (u.dot(c) - v.dot(dc));
     out.grad.row(0) += (da.dot(v) - a.dot(u)) * grad_s.transpose();
     out.grad.row(1) += (db.dot(v) - b.dot(u)) * grad_s.transpose();
@@ -202,6 +229,7 @@ void CrackFront::coordinates(const Eigen::Vector3d* x, int count, TipCoordinates
     int segment;
     Eigen::Vector3d p0, d;
     double len2, len;
+    Eigen::Vector3d p1, c0, c1;  // the far end and the vertex tangents, for normal_plane_root
   };
   std::vector<Candidate> candidates;
   std::vector<double> d2s;
@@ -212,8 +240,12 @@ void CrackFront::coordinates(const Eigen::Vector3d* x, int count, TipCoordinates
     for (const int k : near.chain_segments) {
       const FrontPolyline& ch = (*chains_)[index_->chain_of[k]];
       const int i = index_->segment_of[k], np = static_cast<int>(ch.points.size());
-      const Eigen::Vector3d d = ch.points[(i + 1) % np] - ch.points[i];
-      candidates.push_back({&ch, i, ch.points[i], d, d.squaredNorm(), d.norm()});
+      const Eigen::Vector3d& p1 = ch.points[(i + 1) % np];
+      const Eigen::Vector3d d = p1 - ch.points[i];
+      Eigen::Vector3d c0, c1, b;
+      cached_vertex_frame(ch, i, c0, b);
+      cached_vertex_frame(ch, i + 1, c1, b);
+      candidates.push_back({&ch, i, ch.points[i], d, d.squaredNorm(), d.norm(), p1, c0, c1});
     }
     d2s.resize(candidates.size());
     for (int p = begin; p < end; ++p) {
@@ -240,7 +272,7 @@ void CrackFront::coordinates(const Eigen::Vector3d* x, int count, TipCoordinates
         const Candidate& g = candidates[c];
         const double reach = 1.5 * d0 + 1e-12 * g.len;
         if (d2s[c] > reach * reach) continue;
-        const double f = normal_plane_root(*g.chain, g.segment, y);
+        const double f = normal_plane_root(g.p0, g.p1, g.c0, g.c1, y);
         if (f < 0) continue;
         const double root = g.chain->arc[g.segment] + f * g.len, dist = (y - (g.p0 + f * g.d)).norm();
         if (dist < best_root) {

@@ -165,6 +165,12 @@ CutSurface::Closest CutSurface::closest(const Eigen::Vector3d& x) const {
 
 int CutSurface::side(const Eigen::Vector3d& x) const { return impl_->side(x, closest(x).triangle); }
 
+int CutSurface::side(const Eigen::Vector3d& x, const Closest& closest) const {
+  if (closest.triangle < 0 || closest.triangle >= static_cast<int>(impl_->normals.size()))
+    throw Error("cut surface: side judged at triangle " + std::to_string(closest.triangle) + ", out of range");
+  return impl_->side(x, closest.triangle);
+}
+
 std::vector<int> CutSurface::sides(const Points& points, long begin, long end) const {
   const Impl& m = *impl_;
   std::vector<int> out;
@@ -177,6 +183,16 @@ std::vector<int> CutSurface::sides(const Points& points, long begin, long end) c
     out.push_back(m.side(points.row(i).transpose(), static_cast<int>(hit.second - m.triangles.cbegin())));
   }
   return out;
+}
+
+void CutSurface::sides(const Eigen::Vector3d* points, int count, int* out) const {
+  const Impl& m = *impl_;
+  Tree::Point_and_primitive_id hint;
+  for (int i = 0; i < count; ++i) {
+    const Point q = to_cgal(points[i]);
+    hint = i == 0 ? m.tree.closest_point_and_primitive(q) : m.tree.closest_point_and_primitive(q, hint);
+    out[i] = m.side(points[i], static_cast<int>(hint.second - m.triangles.cbegin()));
+  }
 }
 
 int CutSurface::Impl::side(const Eigen::Vector3d& x, int f) const {

@@ -58,7 +58,7 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
         const double along = cut->unit_normal(near.triangle).dot(normal);
         side = {-along > 0 ? 1 : -1, along > 0 ? 1 : -1};
       } else {
-        side[0] = side[1] = cut->side(centre);
+        side[0] = side[1] = cut->side(centre, near);  // judged at the closest point just found
       }
     }
     polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
