@@ -151,6 +151,9 @@ TEST_CASE("crack_front: coordinates and distances from the segments near a tet e
     // Many points at once (runs of consecutive points, each with its own list), the points of this
     // tet and one far away among them.
     points.insert(points.begin() + 12, at + Eigen::Vector3d(0.3, 0, 0));
+    // More than two runs (of 64): the tet's points again, shifted by up to a tenth of its size.
+    for (std::size_t p = 0; points.size() < 150; ++p)
+      points.push_back(points[p % 31] + 0.1 * size * Eigen::Vector3d(u(rng), u(rng), u(rng)));
     std::vector<xfem::TipCoordinates> many(points.size());
     front.coordinates(points.data(), static_cast<int>(points.size()), many.data());
     for (std::size_t i = 0; i < points.size(); ++i) {

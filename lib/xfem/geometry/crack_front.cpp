@@ -219,9 +219,11 @@ TipCoordinates CrackFront::coordinates(const Eigen::Vector3d& x, const Near& nea
 
 void CrackFront::coordinates(const Eigen::Vector3d* x, int count, TipCoordinates* out) const {
   if (count > 0 && segments_.empty()) throw Error("crack front: no segments (the cut has no front inside the body)");
-  // Runs of 8 points: a list per run costs about two tree searches, the scans of a run's points over
-  // it less than their own searches (measured in docs/PERFORMANCE.md, issue 35).
-  constexpr int kRun = 8;
+  // Runs of 64 points: a list per run costs about two tree searches, the scans of a run's points over
+  // it less than their own searches. Once the foot's frame stopped searching the chain, runs of 32
+  // to 64 beat the 8 of before by ~5 % of xfem-assemble's one-thread CPU on organ S and the organ
+  // example, one list per call lost part of it again (docs/PERFORMANCE.md, issue 35, tenth part).
+  constexpr int kRun = 64;
   // A run's segments unpacked once: the scans below repeat coordinates_visiting's arithmetic,
   // operation for operation (the same bits; test/unit/crack_front.cpp compares them).
   struct Candidate {

@@ -95,7 +95,7 @@ class CrackFront {
   enum class NearFor { coordinates, distances, both };
   Near near(const Eigen::Vector3d* points, int count, NearFor use = NearFor::both) const;
   /// coordinates(x[i]) for i < count into out[i], bit for bit: for integration rules, whose
-  /// consecutive points lie close together. Each run of a few consecutive points gets its own near()
+  /// consecutive points lie close together. Each run of up to 64 consecutive points gets its own near()
   /// list, found with the tree once, and its points scan that short list.
   void coordinates(const Eigen::Vector3d* x, int count, TipCoordinates* out) const;
   /// coordinates(x), bit for bit, scanning only near.chain_segments when x lies in near's ball (the
