@@ -33,6 +33,10 @@ constexpr int kMaxLevelsFar = 8;
 // touching at that end: no split into a sliver.
 constexpr double kTouchMargin = 1e-3;
 
+// At most this many bisections by angle (TetRuleLayout::max_angle) from a piece: two quarter a
+// right-angle-and-more piece's span; more only multiply the points of pieces beyond a front's end.
+constexpr int kMaxAngleSplits = 2;
+
 // Where the front touches the edge pq, as the fraction t along pq of the point of pq closest to
 // the front's nearest segment; -1 when the front stays farther than `within` from pq, runs parallel
 // to it, or touches it within `margin` of an end.
@@ -57,6 +61,15 @@ double front_touch(const CrackFront& front, const CrackFront::Near& near, const 
   }
   if (!(best <= within) || at < margin || at > 1 - margin) return -1;
   return at;
+}
+
+// The angle that the segment pq spans around the front, seen from it (radians, in [0, pi]): the
+// angle between the crack-tip coordinates (xa, xb) of p and of q. For an edge rule on the front it
+// is the range of the angle variable, in which the branch functions vary like cos(theta / 2),
+// sin(3 theta / 2).
+double angle_around_front(const CrackFront& front, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+  const TipCoordinates a = front.coordinates(p), b = front.coordinates(q);
+  return std::atan2(std::abs(a.xa * b.xb - a.xb * b.xa), a.xa * b.xa + a.xb * b.xb);
 }
 
 }  // namespace
@@ -156,6 +169,10 @@ TetRuleLayout TetRuleLayout::uniform(int n) {
 TetRuleLayout TetRuleLayout::of_order(int n) {
   TetRuleLayout l = uniform(n);
   l.split_at_touch = true;
+  // The branch functions vary with the angle around the front like cos(3 theta / 2): a piece at the
+  // front spanning more than a right angle is bisected (ahead of the front nothing else splits it:
+  // the cut's triangles stop at the front).
+  l.max_angle = std::acos(-1.0) / 2;
   // At least 2 points along the front and 3 in the angle: with 1 and 2 (the default until the
   // second session of issue 35's rule work) the pieces at the front held the beam's worst tets and
   // its opening behind the front was 0.2-0.4 % off order 8 (docs/PERFORMANCE.md).
@@ -246,7 +263,7 @@ namespace {
 // as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
 // `near`: the front's segments near a region holding p (CrackFront::near), for its distances.
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const CrackFront::Near& near,
-                     const TetRuleLayout& layout, int side, PointRule& out, int level) {
+                     const TetRuleLayout& layout, int side, PointRule& out, int level, int angle_splits = 0) {
   static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   auto opposite = [](int i, int j, int& k, int& l) {
     k = -1;
@@ -254,15 +271,18 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
       if (m != i && m != j) (k < 0 ? k : l) = m;
   };
   // The tet with vertex i replaced by the midpoint of edge (i, j), and with vertex j replaced.
-  auto bisect = [&](int i, int j) {
+  auto bisect = [&](int i, int j, int angle_split = 0) {
     const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
     std::array<Eigen::Vector3d, 4> q = p;
     q[i] = mid;
-    append_tet_rule(q, front, near, layout, side, out, level + 1);
+    append_tet_rule(q, front, near, layout, side, out, level + 1, angle_splits + angle_split);
     q = p;
     q[j] = mid;
-    append_tet_rule(q, front, near, layout, side, out, level + 1);
+    append_tet_rule(q, front, near, layout, side, out, level + 1, angle_splits + angle_split);
   };
+  // Bisections by angle (max_angle) stop after kMaxAngleSplits: beyond an open front's end the angle
+  // around it is not defined (every direction meets its extension), and no bisection narrows it.
+  const bool may_split_angle = layout.max_angle > 0 && level < kMaxLevels && angle_splits < kMaxAngleSplits;
   const bool may_split = level < layout.near_levels;
   int best = 0, n = layout.far;
   if (!front.empty()) {
@@ -312,6 +332,18 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         }
         if (h < kNear * edge) return bisect(e0, e1);
       }
+      if (may_split_angle) {
+        // The face opposite the vertex seen from the front: its widest edge in angle is bisected.
+        const int face[3] = {j, k, l};
+        double widest = 0;
+        int e0 = 0, e1 = 0;
+        for (int x = 0; x < 3; ++x) {
+          const int u = face[x], v = face[(x + 1) % 3];
+          const double angle = angle_around_front(front, p[u], p[v]);
+          if (angle > widest) widest = angle, e0 = u, e1 = v;
+        }
+        if (widest > layout.max_angle) return bisect(e0, e1, 1);
+      }
       append_vertex_rule(p[on[0]], p[j], p[k], p[l], layout.radial, layout.across, side, out);
       return;
     }
@@ -319,6 +351,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
       if (may_split && front.distance(p[k], p[l], near) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
+      if (may_split_angle && angle_around_front(front, p[k], p[l]) > layout.max_angle) return bisect(k, l, 1);
       append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], layout.radial, layout.along, layout.across, side, out);
       return;
     }

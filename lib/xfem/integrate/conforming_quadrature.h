@@ -102,6 +102,10 @@ struct TetRuleLayout {
   /// split there first, so that the point becomes a vertex of the rules' collapse (of_order(n);
   /// uniform(n) keeps the rule before, which collapses onto the nearest whole edge).
   bool split_at_touch = true;
+  /// A piece with an edge on the front whose opposite edge spans more than this angle around the
+  /// front (radians) is bisected at that edge; one with a vertex on it, at the widest edge of the
+  /// face opposite (0: never; of_order(n): a right angle).
+  double max_angle = 0;
   /// The rule of order n before issue 35: n points in every direction, s = sigma^2 everywhere,
   /// bisection min(8, (n-2)^2) levels at the front, min(8, 2(n-3)) away from it.
   static TetRuleLayout uniform(int n);
@@ -116,7 +120,8 @@ struct TetRuleLayout {
   ///    (the integrand is smooth along it), n - 1 (at least 3) in the angle; with a vertex on it:
   ///    n in sigma, n - 1 (at least 3) in each other direction.
   ///  - A piece whose edge the front touches at an interior point is first split there
-  ///    (split_at_touch).
+  ///    (split_at_touch); a piece at the front spanning more than a right angle around it is
+  ///    bisected (max_angle).
   ///  - Bisection as uniform(n) from order 4 up, none below (at order 3 it moved the error of
   ///    uniform(3) by nothing measurable and cost 1.8x the points).
   static TetRuleLayout of_order(int n);
