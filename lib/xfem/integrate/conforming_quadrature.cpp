@@ -33,8 +33,9 @@ constexpr int kMaxLevelsFar = 8;
 // touching at that end: no split into a sliver.
 constexpr double kTouchMargin = 1e-3;
 
-// At most this many bisections by angle (TetRuleLayout::max_angle) from a piece: two quarter a
-// right-angle-and-more piece's span; more only multiply the points of pieces beyond a front's end.
+// At most this many bisections by angle (TetRuleLayout::max_angle) from a piece: two bring a span
+// of nearly two right angles under one; more would only multiply the points of pieces beyond an
+// open front's end, where the angle around it is not defined.
 constexpr int kMaxAngleSplits = 2;
 
 // Where the front touches the edge pq, as the fraction t along pq of the point of pq closest to
@@ -63,12 +64,11 @@ double front_touch(const CrackFront& front, const CrackFront::Near& near, const 
   return at;
 }
 
-// The angle that the segment pq spans around the front, seen from it (radians, in [0, pi]): the
-// angle between the crack-tip coordinates (xa, xb) of p and of q. For an edge rule on the front it
-// is the range of the angle variable, in which the branch functions vary like cos(theta / 2),
+// The angle that the segment between two points spans around the front, seen from it (radians, in
+// [0, pi]): the angle between their crack-tip coordinates (xa, xb). For an edge rule on the front it
+// is the range of the angle variable, in which the branch functions vary like cos(theta / 2) and
 // sin(3 theta / 2).
-double angle_around_front(const CrackFront& front, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-  const TipCoordinates a = front.coordinates(p), b = front.coordinates(q);
+double angle_around_front(const TipCoordinates& a, const TipCoordinates& b) {
   return std::atan2(std::abs(a.xa * b.xb - a.xb * b.xa), a.xa * b.xa + a.xb * b.xb);
 }
 
@@ -169,13 +169,13 @@ TetRuleLayout TetRuleLayout::uniform(int n) {
 TetRuleLayout TetRuleLayout::of_order(int n) {
   TetRuleLayout l = uniform(n);
   l.split_at_touch = true;
-  // The branch functions vary with the angle around the front like cos(3 theta / 2): a piece at the
+  // The branch functions vary with the angle around the front like sin(3 theta / 2): a piece at the
   // front spanning more than a right angle is bisected (ahead of the front nothing else splits it:
   // the cut's triangles stop at the front).
   l.max_angle = std::acos(-1.0) / 2;
-  // At least 2 points along the front and 3 in the angle: with 1 and 2 (the default until the
-  // second session of issue 35's rule work) the pieces at the front held the beam's worst tets and
-  // its opening behind the front was 0.2-0.4 % off order 8 (docs/PERFORMANCE.md).
+  // At least 2 points along the front and 3 in the angle: with 1 and 2 (order 3 until issue 35's
+  // eleventh part) the pieces at the front held the beam's worst tets and its opening behind the
+  // front was 0.2-0.4 % off order 8 (docs/PERFORMANCE.md).
   l.along = std::max(2, n - 2);
   l.across = std::max(3, n - 1);
   l.far = n + 1;
@@ -335,12 +335,13 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
       if (may_split_angle) {
         // The face opposite the vertex seen from the front: its widest edge in angle is bisected.
         const int face[3] = {j, k, l};
+        TipCoordinates tip[3];
+        for (int x = 0; x < 3; ++x) tip[x] = front.coordinates(p[face[x]]);
         double widest = 0;
         int e0 = 0, e1 = 0;
         for (int x = 0; x < 3; ++x) {
-          const int u = face[x], v = face[(x + 1) % 3];
-          const double angle = angle_around_front(front, p[u], p[v]);
-          if (angle > widest) widest = angle, e0 = u, e1 = v;
+          const double angle = angle_around_front(tip[x], tip[(x + 1) % 3]);
+          if (angle > widest) widest = angle, e0 = face[x], e1 = face[(x + 1) % 3];
         }
         if (widest > layout.max_angle) return bisect(e0, e1, 1);
       }
@@ -351,7 +352,8 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
       int k = -1, l = -1;
       opposite(on[0], on[1], k, l);
       if (may_split && front.distance(p[k], p[l], near) < kNear * (p[k] - p[l]).norm()) return bisect(k, l);
-      if (may_split_angle && angle_around_front(front, p[k], p[l]) > layout.max_angle) return bisect(k, l, 1);
+      if (may_split_angle && angle_around_front(front.coordinates(p[k]), front.coordinates(p[l])) > layout.max_angle)
+        return bisect(k, l, 1);
       append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], layout.radial, layout.along, layout.across, side, out);
       return;
     }
