@@ -99,14 +99,13 @@ void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vec
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 
 // Where x's normal plane meets the chain segment p_i -> p_j (vertex tangents c_i, c_j), as the
-// fraction f in [0, 1] along it, or -1
-// if it does not. Along the segment P(f) = p_i + f d and the tangent is c(f) = c~(f) / |c~(f)|
-// with c~(f) = c_i + f (c_j - c_i) (FrontPolyline::frame), so g(f) = (x - P(f)) . c(f) has the
-// sign of the quadratic h(f) = (w - f d) . (c_i + f e), w = x - p_i, e = c_j - c_i. Solved in
-// closed form: this is called for every integration point of a branch-enriched tet, and the
-// bisection it replaces dominated xfem-assemble on curved fronts. As before, a segment whose ends
-// have the same strict sign of g holds no foot (its two roots, if any, belong to a fold of the
-// normal planes beyond the front's radius of curvature).
+// fraction f in [0, 1] along it, or -1 if it does not. Along the segment P(f) = p_i + f d and the
+// tangent is c(f) = c~(f) / |c~(f)| with c~(f) = c_i + f (c_j - c_i) (FrontPolyline::frame), so
+// g(f) = (x - P(f)) . c(f) has the sign of the quadratic h(f) = (w - f d) . (c_i + f e),
+// w = x - p_i, e = c_j - c_i. Solved in closed form: this is called for every integration point of
+// a branch-enriched tet, and the bisection it replaces dominated xfem-assemble on curved fronts. As
+// before, a segment whose ends have the same strict sign of g holds no foot (its two roots, if any,
+// belong to a fold of the normal planes beyond the front's radius of curvature).
 double normal_plane_root(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& ci,
                          const Eigen::Vector3d& cj, const Eigen::Vector3d& x) {
   const double h0 = (x - pi).dot(ci), h1 = (x - pj).dot(cj);
