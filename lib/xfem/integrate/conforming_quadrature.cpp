@@ -270,15 +270,19 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     for (int m = 0; m < 4; ++m)
       if (m != i && m != j) (k < 0 ? k : l) = m;
   };
-  // The tet with vertex i replaced by the midpoint of edge (i, j), and with vertex j replaced.
-  auto bisect = [&](int i, int j, int angle_split = 0) {
-    const Eigen::Vector3d mid = 0.5 * (p[i] + p[j]);
+  // The tet with vertex i replaced by the point x of edge (i, j), and with vertex j replaced, each
+  // with `halves_angle_splits` bisections by angle behind it.
+  auto split_edge = [&](int i, int j, const Eigen::Vector3d& x, int halves_angle_splits) {
     std::array<Eigen::Vector3d, 4> q = p;
-    q[i] = mid;
-    append_tet_rule(q, front, near, layout, side, out, level + 1, angle_splits + angle_split);
+    q[i] = x;
+    append_tet_rule(q, front, near, layout, side, out, level + 1, halves_angle_splits);
     q = p;
-    q[j] = mid;
-    append_tet_rule(q, front, near, layout, side, out, level + 1, angle_splits + angle_split);
+    q[j] = x;
+    append_tet_rule(q, front, near, layout, side, out, level + 1, halves_angle_splits);
+  };
+  // ... at the midpoint of the edge.
+  auto bisect = [&](int i, int j, int angle_split = 0) {
+    split_edge(i, j, 0.5 * (p[i] + p[j]), angle_splits + angle_split);
   };
   // Bisections by angle (max_angle) stop after kMaxAngleSplits: beyond an open front's end the angle
   // around it is not defined (every direction meets its extension), and no bisection narrows it.
@@ -302,14 +306,7 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         if (count == 1 && (on[0] == i || on[0] == j)) continue;
         const double t = front_touch(front, near, p[i], p[j], kOnFront * longest, kTouchMargin);
         if (t < 0) continue;
-        const Eigen::Vector3d x = p[i] + t * (p[j] - p[i]);
-        std::array<Eigen::Vector3d, 4> q = p;
-        q[i] = x;
-        append_tet_rule(q, front, near, layout, side, out, level + 1);
-        q = p;
-        q[j] = x;
-        append_tet_rule(q, front, near, layout, side, out, level + 1);
-        return;
+        return split_edge(i, j, p[i] + t * (p[j] - p[i]), 0);  // the halves' angle bisections start afresh
       }
     }
     if (count == 1) {
