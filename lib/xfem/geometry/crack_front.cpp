@@ -98,6 +98,41 @@ namespace {
 void vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 void cached_vertex_frame(const FrontPolyline& p, int v, Eigen::Vector3d& cv, Eigen::Vector3d& bv);
 
+// The fraction along segment i of a chain at arc length s (wrapped or clamped to the chain).
+double fraction_on(const FrontPolyline& p, int i, double s) {
+  const double end = i + 1 < static_cast<int>(p.arc.size()) ? p.arc[i + 1] : p.length;
+  return end > p.arc[i] ? std::clamp((s - p.arc[i]) / (end - p.arc[i]), 0.0, 1.0) : 0.0;
+}
+
+// The point at fraction f along segment i of a chain.
+Eigen::Vector3d point_on(const FrontPolyline& p, int i, double f) {
+  return (1 - f) * p.points[i] + f * p.points[(i + 1) % static_cast<int>(p.points.size())];
+}
+
+// The frame interpolated at fraction f along segment i of a chain (FrontPolyline::frame):
+// c = c~ / |c~| with c~ = (1 - f) c0 + f c1, b = beta / |beta| with beta = b~ - (b~ . c) c and
+// b~ = (1 - f) b0 + f b1, from the vertices' tangents c0, c1 and normals b0, b1. The unnormalised
+// vectors and their norms are kept for the frame's derivative (tip_coordinates_at_foot).
+struct SegmentFrame {
+  Eigen::Vector3d c0, b0, c1, b1, c_tilde, c, b_tilde, beta, b;
+  double c_norm = 0, beta_norm = 0;
+};
+
+SegmentFrame segment_frame(const FrontPolyline& p, int i, double f) {
+  SegmentFrame s;
+  cached_vertex_frame(p, i, s.c0, s.b0);
+  cached_vertex_frame(p, i + 1, s.c1, s.b1);
+  // v / |v| is what Eigen's normalized() computes: each norm is taken once.
+  s.c_tilde = (1 - f) * s.c0 + f * s.c1;
+  s.c_norm = s.c_tilde.norm();
+  s.c = s.c_norm > 0 ? (s.c_tilde / s.c_norm).eval() : s.c_tilde;
+  s.b_tilde = (1 - f) * s.b0 + f * s.b1;
+  s.beta = s.b_tilde - s.b_tilde.dot(s.c) * s.c;
+  s.beta_norm = s.beta.norm();
+  s.b = s.beta_norm > 0 ? (s.beta / s.beta_norm).eval() : s.beta;
+  return s;
+}
+
 // Where x's normal plane meets the chain segment p_i -> p_j (vertex tangents c_i, c_j), as the
 // fraction f in [0, 1] along it, or -1 if it does not. Along the segment P(f) = p_i + f d and the
 // tangent is c(f) = c~(f) / |c~(f)| with c~(f) = c_i + f (c_j - c_i) (FrontPolyline::frame), so
@@ -145,31 +180,16 @@ double normal_plane_root(const FrontPolyline& ch, int i, const Eigen::Vector3d& 
 // chain).
 TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double s, bool inside,
                                        const Eigen::Vector3d& x) {
-  const int np = static_cast<int>(ch.points.size());
-  const Eigen::Vector3d& p0 = ch.points[seg];
-  const Eigen::Vector3d& p1 = ch.points[(seg + 1) % np];
-  const Eigen::Vector3d d = p1 - p0;
+  const Eigen::Vector3d d = ch.points[(seg + 1) % static_cast<int>(ch.points.size())] - ch.points[seg];
   const double len = d.norm();
-  // The foot's fraction along its segment as FrontPolyline::position and ::frame find it (s lies in
-  // [arc[seg], arc[seg] + len]: where their search would take the next segment, s is that segment's
-  // start, and both give the same bits at the shared vertex), without their search: this runs for
-  // every integration point of a branch-enriched tet.
-  const double start = ch.arc[seg];
-  const double end = seg + 1 < static_cast<int>(ch.arc.size()) ? ch.arc[seg + 1] : ch.length;
-  const double f = end > start ? std::clamp((s - start) / (end - start), 0.0, 1.0) : 0.0;
-  const Eigen::Vector3d P = (1 - f) * p0 + f * p1;
-  // The frame interpolated at f, operation for operation as FrontPolyline::frame: c = c~ / |c~|
-  // with c~ = (1 - f) c0 + f c1, b = beta / |beta| with beta = b~ - (b~ . c) c, b~ likewise.
-  Eigen::Vector3d c0, b0, c1, b1;
-  cached_vertex_frame(ch, seg, c0, b0);
-  cached_vertex_frame(ch, seg + 1, c1, b1);
-  // Each norm taken once, for the frame and its derivative (v / |v| is what normalized() computes).
-  const Eigen::Vector3d c_tilde = (1 - f) * c0 + f * c1;
-  const double c_norm = c_tilde.norm();
-  const Eigen::Vector3d c = c_norm > 0 ? (c_tilde / c_norm).eval() : c_tilde;
-  const Eigen::Vector3d b_tilde = (1 - f) * b0 + f * b1, beta = b_tilde - b_tilde.dot(c) * c;
-  const double beta_norm = beta.norm();
-  const Eigen::Vector3d b = beta_norm > 0 ? (beta / beta_norm).eval() : beta;
+  // The foot's fraction along its known segment, as FrontPolyline::position and ::frame find it
+  // after their search (s lies in [arc[seg], arc[seg] + len]: where their search would take the
+  // next segment, s is that segment's start, and both give the same bits at the shared vertex),
+  // without the search: this runs for every integration point of a branch-enriched tet.
+  const double f = fraction_on(ch, seg, s);
+  const Eigen::Vector3d P = point_on(ch, seg, f);
+  const SegmentFrame fr = segment_frame(ch, seg, f);
+  const Eigen::Vector3d &c = fr.c, &b = fr.b;
   const Eigen::Vector3d a = b.cross(c), v = x - P;
   TipCoordinates out;
   out.xa = a.dot(v);
@@ -182,10 +202,10 @@ TipCoordinates tip_coordinates_at_foot(const FrontPolyline& ch, int seg, double 
     // The frame's derivative in closed form (df/ds = 1 / len), the derivative of a normalisation
     // y / |y| being (I - y^ y^T) y' / |y|.
     const Eigen::Vector3d u = d / len;
-    const Eigen::Vector3d dc_tilde = (c1 - c0) / len, db_tilde = (b1 - b0) / len;
-    const Eigen::Vector3d dc = (dc_tilde - c.dot(dc_tilde) * c) / c_norm;
-    const Eigen::Vector3d dbeta = db_tilde - (db_tilde.dot(c) + b_tilde.dot(dc)) * c - b_tilde.dot(c) * dc;
-    const Eigen::Vector3d db = (dbeta - b.dot(dbeta) * b) / beta_norm;
+    const Eigen::Vector3d dc_tilde = (fr.c1 - fr.c0) / len, db_tilde = (fr.b1 - fr.b0) / len;
+    const Eigen::Vector3d dc = (dc_tilde - c.dot(dc_tilde) * c) / fr.c_norm;
+    const Eigen::Vector3d dbeta = db_tilde - (db_tilde.dot(c) + fr.b_tilde.dot(dc)) * c - fr.b_tilde.dot(c) * dc;
+    const Eigen::Vector3d db = (dbeta - b.dot(dbeta) * b) / fr.beta_norm;
     // (b x c') . v vanishes at the foot (c' lies in span(a, b), so b x c' is along c, and c . v = 0
     // there): kept for a = b x c's derivative in full.
     const Eigen::Vector3d da = db.cross(c) + b.cross(dc);
@@ -493,8 +513,7 @@ void locate(const FrontPolyline& p, double s, int& i, double& f) {
   const int m = p.segments();
   i = static_cast<int>(std::upper_bound(p.arc.begin(), p.arc.end(), s) - p.arc.begin()) - 1;
   i = std::clamp(i, 0, m - 1);
-  const double end = i + 1 < static_cast<int>(p.arc.size()) ? p.arc[i + 1] : p.length;
-  f = end > p.arc[i] ? std::clamp((s - p.arc[i]) / (end - p.arc[i]), 0.0, 1.0) : 0.0;
+  f = fraction_on(p, i, s);
 }
 
 double wrap(const FrontPolyline& p, double s) {
@@ -509,8 +528,7 @@ Eigen::Vector3d FrontPolyline::position(double s) const {
   int i;
   double f;
   locate(*this, wrap(*this, s), i, f);
-  const int j = (i + 1) % static_cast<int>(points.size());
-  return (1 - f) * points[i] + f * points[j];
+  return point_on(*this, i, f);
 }
 
 namespace {
@@ -546,12 +564,9 @@ void FrontPolyline::frame(double s, Eigen::Vector3d& c, Eigen::Vector3d& b) cons
   int i;
   double f;
   locate(*this, wrap(*this, s), i, f);
-  Eigen::Vector3d c0, b0, c1, b1;
-  cached_vertex_frame(*this, i, c0, b0);
-  cached_vertex_frame(*this, i + 1, c1, b1);
-  c = ((1 - f) * c0 + f * c1).normalized();
-  b = (1 - f) * b0 + f * b1;
-  b = (b - b.dot(c) * c).normalized();
+  const SegmentFrame fr = segment_frame(*this, i, f);
+  c = fr.c;
+  b = fr.b;
 }
 
 void FrontPolyline::closest(const Eigen::Vector3d& x, double& s, double& distance, int* segment, bool* inside) const {
