@@ -87,6 +87,18 @@ struct CutSurface::Impl {
   Eigen::Vector3d point(int i) const { return mesh.points.row(i).transpose(); }
   /// H(x) judged at the closest point of triangle f (f must hold a closest point of the cut).
   int side(const Eigen::Vector3d& x, int f) const;
+  /// side() of the points at(0) .. at(count - 1) into out[0 .. count - 1], each closest-point search
+  /// started from the previous point's answer (CGAL's hint): for points that lie close together.
+  template <class PointAt>
+  void hinted_sides(long count, PointAt&& at, int* out) const {
+    Tree::Point_and_primitive_id hint;
+    for (long i = 0; i < count; ++i) {
+      const Eigen::Vector3d x = at(i);
+      const Point q = to_cgal(x);
+      hint = i == 0 ? tree.closest_point_and_primitive(q) : tree.closest_point_and_primitive(q, hint);
+      out[i] = side(x, static_cast<int>(hint.second - triangles.cbegin()));
+    }
+  }
 };
 
 CutSurface::CutSurface(TriangleMesh cut) : impl_(std::make_unique<Impl>()) {
@@ -172,27 +184,14 @@ int CutSurface::side(const Eigen::Vector3d& x, const Closest& closest) const {
 }
 
 std::vector<int> CutSurface::sides(const Points& points, long begin, long end) const {
-  const Impl& m = *impl_;
-  std::vector<int> out;
-  out.reserve(std::max(0L, end - begin));
-  Tree::Point_and_primitive_id hint;
-  for (long i = begin; i < end; ++i) {
-    const Point q(points(i, 0), points(i, 1), points(i, 2));
-    const auto hit = i == begin ? m.tree.closest_point_and_primitive(q) : m.tree.closest_point_and_primitive(q, hint);
-    hint = hit;
-    out.push_back(m.side(points.row(i).transpose(), static_cast<int>(hit.second - m.triangles.cbegin())));
-  }
+  std::vector<int> out(static_cast<std::size_t>(std::max(0L, end - begin)));
+  impl_->hinted_sides(static_cast<long>(out.size()), [&](long i) { return points.row(begin + i).transpose().eval(); },
+                      out.data());
   return out;
 }
 
 void CutSurface::sides(const Eigen::Vector3d* points, int count, int* out) const {
-  const Impl& m = *impl_;
-  Tree::Point_and_primitive_id hint;
-  for (int i = 0; i < count; ++i) {
-    const Point q = to_cgal(points[i]);
-    hint = i == 0 ? m.tree.closest_point_and_primitive(q) : m.tree.closest_point_and_primitive(q, hint);
-    out[i] = m.side(points[i], static_cast<int>(hint.second - m.triangles.cbegin()));
-  }
+  impl_->hinted_sides(count, [&](long i) { return points[i]; }, out);
 }
 
 int CutSurface::Impl::side(const Eigen::Vector3d& x, int f) const {
