@@ -39,6 +39,7 @@
 
 #include "xfem/enrich/enriched_mesh.h"
 #include "xfem/integrate/closed_form_stiffness.h"
+#include "xfem/integrate/straight_front_rule.h"
 #include "xfem/integrate/consistent_gradients.h"
 
 namespace {
@@ -48,6 +49,7 @@ struct Rule {
   xfem::TetRuleLayout layout;
   int consistent = 3;  // Gauss points per direction of the face integrals
   int near_faces = 0;  // points per direction on the faces near the front (0: as the others)
+  int straight = 0;    // > 0: straight_front_rule with that many angle points where a tet qualifies
 };
 
 Rule parse(const std::string& full) {
@@ -66,6 +68,14 @@ Rule parse(const std::string& full) {
   } else if (s == "graded") {
     r.layout = xfem::TetRuleLayout::graded();
     r.consistent = xfem::TetRuleLayout::graded_consistent_order;
+  } else if (s.rfind("straight:", 0) == 0) {  // straight:N[:A]: order N, straight fronts with A angle points
+    const std::size_t colon = s.find(':', 9);
+    const int n = std::stoi(s.substr(9, colon - 9));
+    r.layout = xfem::TetRuleLayout::of_order(n);
+    r.consistent = n;
+    r.straight = colon == std::string::npos ? xfem::straight_front_angle_points(n) : std::stoi(s.substr(colon + 1));
+    const std::size_t third = colon == std::string::npos ? colon : s.find(':', colon + 1);
+    if (third != std::string::npos) r.consistent = std::stoi(s.substr(third + 1));  // straight:N:A:C, C = 0: no shift
   } else if (s.rfind("order:", 0) == 0) {  // the rule of order N (TetRuleLayout::of_order, the default's family)
     const int n = std::stoi(s.substr(6));
     r.layout = xfem::TetRuleLayout::of_order(n);
@@ -202,9 +212,13 @@ int main(int argc, char** argv) {
       xfem::PointRule points;
       Eigen::MatrixXd k;
       const Rule& r = r_ref;
+      xfem::ClosedFormWorkspace work;
       for (std::size_t i = 0; i < tets.size(); ++i) {
-        xfem::conforming_rule(em, splits, tets[i], r.layout, points);
-        xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, r.consistent, nullptr, r.near_faces);
+        const bool straight = r.straight > 0 && xfem::straight_front_rule(em, splits, tets[i], r.straight, work.straight);
+        if (straight) points.clear();
+        else xfem::conforming_rule(em, splits, tets[i], r.layout, points);
+        xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, r.consistent, nullptr, r.near_faces, work,
+                                    straight ? &work.straight : nullptr, r.straight);
         ref[i] = branch_block(em, tets[i], k);
       }
       if (!reference_file.empty()) {
@@ -235,20 +249,30 @@ int main(int argc, char** argv) {
         xfem::PointRule points;
         Eigen::MatrixXd k;
         xfem::FaceIntegralCache faces;
+        xfem::ClosedFormWorkspace work;
         std::vector<double> err;
         double total = 0, most = 0;
+        long straight_tets = 0;
         const auto start = std::chrono::steady_clock::now();
         for (std::size_t i = 0; i < tets.size(); ++i) {
-          xfem::conforming_rule(em, splits, tets[i], rules[r].layout, points);
+          const bool straight = rules[r].straight > 0 &&
+                                xfem::straight_front_rule(em, splits, tets[i], rules[r].straight, work.straight);
+          if (straight) points.clear();
+          else xfem::conforming_rule(em, splits, tets[i], rules[r].layout, points);
           xfem::closed_form_stiffness(em, splits, tets[i], points, material, k, rules[r].consistent, &faces,
-                                      rules[r].near_faces);
+                                      rules[r].near_faces, work, straight ? &work.straight : nullptr, rules[r].straight);
           if (run == 0) {
             const Eigen::MatrixXd b = branch_block(em, tets[i], k);
             err.push_back((b - ref[i]).norm() / ref[i].norm());
-            total += points.size();
-            most = std::max<double>(most, points.size());
+            const int used = straight ? work.straight.points.size() : points.size();
+            total += used;
+            most = std::max<double>(most, used);
+            straight_tets += straight;
           }
         }
+        if (run == 0 && rules[r].straight > 0)
+          std::fprintf(stderr, "%s: %ld of %zu tets by the straight-front rule\n", rules[r].name.c_str(), straight_tets,
+                       tets.size());
         times[r].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (run == 0) {
           errors[r] = err;

@@ -13,8 +13,10 @@ namespace xfem {
 namespace {
 
 /// enriched_basis for a mesh with several cuts: `code` is a side code (side_codes.h).
+// `tip` (optional): x's crack-tip coordinates for the tet's branch cut (it holds one cut's branch
+// DOFs at most), if the caller has them.
 void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int code,
-                        BasisAt& out) {
+                        const TipCoordinates* tip, BasisAt& out) {
   const int K = static_cast<int>(em.cuts.size());
   const long begin = em.offsets[t];
   const int n = em.size(t);
@@ -88,7 +90,7 @@ void several_cuts_basis(const EnrichedMesh& em, int t, const TetShape& shape, co
     if (k < 0) throw Error("tet " + std::to_string(t) + ": DOF " + std::to_string(dof) + " is in no cut's block");
     if (k != branch_cut) {
       const CutLayer& c = em.cuts[k];
-      const TipCoordinates tc = c.front.coordinates(x);
+      const TipCoordinates tc = tip ? *tip : c.front.coordinates(x);
       int side = 0;
       if (code >= 2)
         side = code_side(code, k);
@@ -153,7 +155,7 @@ void one_cut_basis(const EnrichedMesh& em, int t, const TetShape& shape, const E
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     BasisAt& out) {
   if (!em.cuts.empty()) {  // several cuts: side is a side code (side_codes.h)
-    several_cuts_basis(em, t, shape, x, side, out);
+    several_cuts_basis(em, t, shape, x, side, nullptr, out);
     return;
   }
   one_cut_basis(em, t, shape, x, side, nullptr, out);
@@ -162,7 +164,7 @@ void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const 
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     const TipCoordinates& tip, BasisAt& out) {
   if (!em.cuts.empty()) {
-    several_cuts_basis(em, t, shape, x, side, out);
+    several_cuts_basis(em, t, shape, x, side, &tip, out);
     return;
   }
   one_cut_basis(em, t, shape, x, side, &tip, out);

@@ -33,9 +33,9 @@ void enriched_basis(const EnrichedMesh& em, int t, const Eigen::Vector3d& x, int
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     BasisAt& out);
 
-/// The same with x's crack-tip coordinates `tip` computed by the caller (what em.front.coordinates(x)
-/// gives, e.g. by CrackFront::coordinates(x, near) with the front's segments near the tet found once
-/// for all its points). Used for one cut only: with several cuts (em.cuts) `tip` is ignored.
+/// The same with x's crack-tip coordinates `tip` computed by the caller (what the front of the tet's
+/// branch cut, front_of_tet, gives: e.g. by CrackFront::coordinates(x, near) with the front's segments
+/// near the tet found once for all its points; or a straight front's line, straight_front_rule.h).
 void enriched_basis(const EnrichedMesh& em, int t, const TetShape& shape, const Eigen::Vector3d& x, int side,
                     const TipCoordinates& tip, BasisAt& out);
 

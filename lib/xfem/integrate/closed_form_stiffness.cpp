@@ -22,7 +22,17 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
 
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
-                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work) {
+                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work,
+                           const StraightFrontRule* straight, int straight_face_points) {
+  stiffness_from_moments(closed_form_moments(em, splits, t, branch_rule, consistent_order, face_cache, near_face_points,
+                                             work, straight, straight_face_points),
+                         material, k);
+}
+
+Eigen::Map<Eigen::MatrixXd, Eigen::AlignedMax> closed_form_moments(
+    const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule, int consistent_order,
+    FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work, const StraightFrontRule* straight,
+    int straight_face_points) {
   const int n = em.size(t);
   const long base = em.offsets[t];
   const long first_branch = em.np + em.ns;
@@ -59,19 +69,25 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
     for (int j = 0; j < na; ++j) S(a_cols[i], a_cols[j]) = Saa(i, j);
 
   if (nb > 0) {
-    const int q = branch_rule.size();
-    // b_p, then overwritten by B: row p sqrt(w_p) b_p (the branch columns only: the others are not used)
+    const PointRule& rule = straight ? straight->points : branch_rule;
+    const int q = rule.size();
+    // b_p, then overwritten by B: row p sqrt(|w_p|) b_p (the branch columns only: the others are not used)
     auto B = work.B.view(q, nb);
-    sampled_gradients(em, t, branch_rule, consistent_order, face_cache, b_cols, B, work.tips, near_face_points);
+    if (straight) work.tips = straight->tips;
+    sampled_gradients(em, t, rule, consistent_order, face_cache, b_cols, B, work.tips, near_face_points,
+                      straight != nullptr, straight_face_points);
     auto sums = work.sums.view(R, nb);  // row r: sum over p in r of w_p b_p
     sums.setZero();
     for (int p = 0; p < q; ++p) {
-      const auto found = std::find(regions.side.begin(), regions.side.end(), branch_rule.side[p]);
+      // A straight-front rule's points in an uncut tet have the side of the cut's plane (for theta);
+      // they all belong to its one region.
+      const auto found = straight && R == 1 ? regions.side.begin()
+                                            : std::find(regions.side.begin(), regions.side.end(), rule.side[p]);
       if (found == regions.side.end())
         throw Error("closed-form stiffness of tet " + std::to_string(t) + ": an integration point has side " +
-                    std::to_string(branch_rule.side[p]) + ", which no piece of the tet has");
+                    std::to_string(rule.side[p]) + ", which no piece of the tet has");
       const int r = static_cast<int>(found - regions.side.begin());
-      const double w = branch_rule.weights[p], sw = std::sqrt(w);
+      const double w = rule.weights[p], sw = std::sqrt(std::abs(w));
       for (int i = 0; i < nb; ++i) {
         const double g = B(p, i);
         sums(r, i) += w * g;
@@ -80,7 +96,9 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
     }
     auto Sbb = work.Sbb.view(nb, nb);
     Sbb.setZero();
-    Sbb.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());
+    const int positive = straight ? straight->negative_begin : q;  // the exact pieces' weights are all positive
+    Sbb.selfadjointView<Eigen::Lower>().rankUpdate(B.topRows(positive).transpose());
+    if (positive < q) Sbb.selfadjointView<Eigen::Lower>().rankUpdate(B.bottomRows(q - positive).transpose(), -1.0);
     Sbb.triangularView<Eigen::StrictlyUpper>() = Sbb.transpose();
     auto Sab = work.Sab.view(na, nb);
     Sab.noalias() = A.transpose() * sums;
@@ -89,7 +107,7 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
     for (int i = 0; i < na; ++i)
       for (int j = 0; j < nb; ++j) S(a_cols[i], b_cols[j]) = S(b_cols[j], a_cols[i]) = Sab(i, j);
   }
-  stiffness_from_moments(S, material, k);
+  return S;
 }
 
 }  // namespace xfem

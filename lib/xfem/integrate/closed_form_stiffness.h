@@ -8,6 +8,7 @@
 #include "xfem/integrate/cut_element_splits.h"
 #include "xfem/integrate/element_stiffness.h"
 #include "xfem/integrate/scratch_matrix.h"
+#include "xfem/integrate/straight_front_rule.h"
 
 namespace xfem {
 
@@ -19,6 +20,7 @@ struct ClosedFormWorkspace {
   std::vector<int> a_cols, b_cols;
   ScratchMatrix A, Ga, Saa, S, B, sums, Sbb, Sab;
   std::vector<TipCoordinates> tips;
+  StraightFrontRule straight;  ///< for the caller's straight_front_rule
 };
 
 /// Stiffness of formula (5) of an enriched tet t, block by block, with quadrature points only
@@ -45,9 +47,21 @@ struct ClosedFormWorkspace {
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
                            FaceIntegralCache* face_cache = nullptr, int near_face_points = 0);
-/// The same with the caller's buffers (the same bits).
+/// The same with the caller's buffers (the same bits). `straight` (optional): the tet's
+/// straight_front_rule, used for the branch functions instead of `branch_rule` (which may then be
+/// empty); its signed weights enter S as sum_p w_p b_p b_p^T all the same (positive part minus
+/// negative part), and each point's sums go to its side's region (the only region of an uncut tet).
+/// `straight_face_points` > 0: the consistent shift's faces by a straight front exactly
+/// (branch_gradient_integrals), for every tet of an assembly alike (a face's two tets must agree).
 void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule,
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
-                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work);
+                           FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work,
+                           const StraightFrontRule* straight = nullptr, int straight_face_points = 0);
+/// The moments S of the above (3|C| x 3|C|, k = stiffness_from_moments(S)), a view into `work`
+/// valid until its next use: for the nonlinear path's straight-front correction (element_points.h).
+Eigen::Map<Eigen::MatrixXd, Eigen::AlignedMax> closed_form_moments(
+    const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule, int consistent_order,
+    FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work,
+    const StraightFrontRule* straight = nullptr, int straight_face_points = 0);
 
 }  // namespace xfem

@@ -429,7 +429,7 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, const std::vector<int>& columns,
                        Eigen::Ref<Eigen::MatrixXd> gradients, std::vector<TipCoordinates>& tips,
-                       int near_face_points) {
+                       int near_face_points, bool tips_given, int straight_face_points) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
   const int m = columns.empty() ? 3 * n : static_cast<int>(columns.size());
@@ -441,8 +441,11 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   const bool branch = em.branch(t);
   // The crack-tip coordinates of a branch tet's points together (CrackFront::coordinates of many
   // points): the same bits as a search of the whole front per point.
-  const bool near_front = branch && em.cuts.empty() && !em.front.empty() && q > 0;
-  if (near_front) {
+  const bool near_front = tips_given || (branch && em.cuts.empty() && !em.front.empty() && q > 0);
+  if (tips_given && static_cast<int>(tips.size()) != q)
+    throw Error("sampled gradients of tet " + std::to_string(t) + ": " + std::to_string(tips.size()) +
+                " crack-tip coordinates given for " + std::to_string(q) + " points");
+  if (near_front && !tips_given) {
     tips.resize(q);
     em.front.coordinates(rule.x.data(), q, tips.data());
   }
@@ -457,7 +460,8 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
   if (consistent_order > 0 && branch && q > 0) {
     const Eigen::Map<const Eigen::VectorXd> w(rule.weights.data(), q);
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(em, t, consistent_face_points(consistent_order), face_cache, near_face_points);
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> exact = branch_gradient_integrals(
+        em, t, consistent_face_points(consistent_order), face_cache, near_face_points, straight_face_points);
     const double volume = w.sum();
     for (int i = 0; i < m; ++i) {
       const int c = column(i) / 3, a = column(i) % 3;

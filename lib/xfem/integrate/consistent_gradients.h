@@ -61,8 +61,11 @@ class FaceIntegralCache {
 /// direction instead on the faces the front passes near (closer to the face's centroid than its
 /// longest edge), where F ~ sqrt(r) is nearly singular; decided by the face alone, so both tets of a
 /// face agree. (The cut loads' face points, cut_face_points, do not follow it.)
+/// `straight_angle_points` > 0: a face the front passes by in a straight line
+/// (straight_front_face_integrals, decided by the face alone) is integrated exactly but for the
+/// angle, with that many points per stretch (the rule of order n: straight_front_angle_points(n)).
 Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const EnrichedMesh& em, int t, int order,
                                                                    FaceIntegralCache* cache = nullptr,
-                                                                   int near_order = 0);
+                                                                   int near_order = 0, int straight_angle_points = 0);
 
 }  // namespace xfem

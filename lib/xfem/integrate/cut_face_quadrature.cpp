@@ -37,11 +37,26 @@ void triangle_rule(const Eigen::Vector3d& A, const Eigen::Vector3d& B, const Eig
       return;
     }
   }
+  // Corners on the front: there F ~ sqrt(r) is not smooth. With x = A + s (B - A) + s t (C - B) the
+  // distance to a straight front through A is ~ s, through A and B ~ s t, through A and C
+  // ~ s (1 - t), through B and C ~ 1 - s: the maps s = sigma^2, t = tau^2 (or 1 - ...) make sqrt(r)
+  // polynomial, as the volume rule's collapse does (a fan from a front point, whose corner A lies
+  // on the front, and the fan triangle along a front on the polygon's edge).
+  bool on[3] = {false, false, false};
+  const Eigen::Vector3d* corner[3] = {&A, &B, &C};
+  const double size = std::max({(B - A).norm(), (C - B).norm(), (A - C).norm()});
+  for (const FrontSegment* f : fronts)
+    for (int k = 0; k < 3; ++k) on[k] = on[k] || point_segment_distance(*corner[k], f->p0, f->p1) <= 1e-9 * size;
+  const int s_map = on[0] ? 1 : (on[1] && on[2]) ? 2 : 0;                       // s = sigma^2, s = 1 - sigma^2
+  const int t_map = on[0] && on[1] && !on[2] ? 1 : on[0] && on[2] && !on[1] ? 2 : 0;  // t = tau^2, t = 1 - tau^2
   for (std::size_t i1 = 0; i1 < nodes.size(); ++i1)
     for (std::size_t i2 = 0; i2 < nodes.size(); ++i2) {
-      const double s = nodes[i1], t = nodes[i2];
+      const double sigma = nodes[i1], tau = nodes[i2];
+      const double s = s_map == 1 ? sigma * sigma : s_map == 2 ? 1 - sigma * sigma : sigma;
+      const double t = t_map == 1 ? tau * tau : t_map == 2 ? 1 - tau * tau : tau;
+      const double ds = s_map ? 2 * sigma : 1.0, dt = t_map ? 2 * tau : 1.0;
       x.push_back(A + s * (B - A) + s * t * (C - B));
-      w.push_back(weights[i1] * weights[i2] * area2 * s);
+      w.push_back(weights[i1] * weights[i2] * area2 * s * ds * dt);
     }
 }
 

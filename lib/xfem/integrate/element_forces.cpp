@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "xfem/integrate/element_forces.h"
+#include "xfem/integrate/element_stiffness.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -27,6 +28,7 @@ struct Scratch {
   Eigen::MatrixXd A;        // q x 81: row p = w_p A_p, column 9 (3 i + J) + 3 k + L
   Eigen::MatrixXd H;        // 3q x n
   Eigen::MatrixXd block;    // n x n
+  Eigen::MatrixXd kc;       // 3n x 3n: the straight-front correction's stiffness
 };
 
 }  // namespace
@@ -83,6 +85,12 @@ bool element_forces(const ElementPoints& points, const MaterialLaw& law, const E
   const Eigen::MatrixXd R = S.transpose() * s.W;  // n x 3
   for (int c = 0; c < n; ++c)
     for (int i = 0; i < 3; ++i) out.r[3 * c + i] = R(c, i);
+  if (points.correction.size() > 0) {
+    stiffness_from_moments(points.correction, law.lame, s.kc);
+    const Eigen::VectorXd kcu = s.kc * ue;
+    out.r += kcu;
+    out.energy += 0.5 * ue.dot(kcu);
+  }
   if (!tangent) return true;
   // A is symmetric, so k_ki = k_ik^T: the 6 blocks with i <= k.
   s.H.resize(3 * q, n);
@@ -101,6 +109,7 @@ bool element_forces(const ElementPoints& points, const MaterialLaw& law, const E
           out.k(3 * d + k, 3 * c + i) = s.block(c, d);
         }
     }
+  if (points.correction.size() > 0) out.k += s.kc;
   return true;
 }
 

@@ -39,7 +39,9 @@ enum class Tangent { Exact, Projected };
 
 /// Evaluates the tet at `ue`; k only when `tangent`. Returns false, leaving `out` incomplete, when
 /// a point of a model other than "linear" that is not next to a front has det F <= 0 (an inverted
-/// point: the solve rejects the step); the linear model never refuses.
+/// point: the solve rejects the step); the linear model never refuses. A tet with a straight-front
+/// `correction` (element_points.h) adds the linear law's k_c = stiffness_from_moments(correction):
+/// energy + u.k_c u / 2, r + k_c u, k + k_c.
 bool element_forces(const ElementPoints& points, const MaterialLaw& law, const Eigen::VectorXd& ue, bool tangent,
                     ElementForces& out, Tangent kind = Tangent::Exact);
 

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "xfem/geometry/tet_shape.h"
+#include "xfem/integrate/closed_form_stiffness.h"
+#include "xfem/integrate/straight_front_rule.h"
 
 namespace xfem {
 
@@ -22,13 +24,21 @@ void element_points(const EnrichedMesh& em, const CutElementSplits& splits, int 
   }
   PointRule rule;
   conforming_rule(em, splits, t, order, rule);
-  Eigen::MatrixXd gradients;
-  sampled_gradients(em, t, rule, order, face_cache, gradients);
+  const int straight_points = straight_front_angle_points(order);
+  Eigen::MatrixXd gradients(rule.size(), 3 * n);
+  std::vector<TipCoordinates> tips;
+  sampled_gradients(em, t, rule, order, face_cache, std::vector<int>(), gradients, tips, 0, false, straight_points);
   const bool branch = em.branch(t);
   const int q = rule.size();
+  out.correction.resize(0, 0);
   if (branch) {
     out.weight = Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), q);
     out.gradient = std::move(gradients);
+    ClosedFormWorkspace work;
+    if (straight_front_rule(em, splits, t, straight_points, work.straight))
+      out.correction = closed_form_moments(em, splits, t, PointRule(), order, face_cache, 0, work, &work.straight,
+                                           straight_points) -
+                       out.gradient.transpose() * out.weight.asDiagonal() * out.gradient;
     return;
   }
   // Sign enrichment only: one point per distinct gradient row (one per side or region).

@@ -9,7 +9,9 @@
 #include <cmath>
 
 #include "xfem/system/assembly.h"
+#include "xfem/integrate/closed_form_stiffness.h"
 #include "xfem/integrate/conforming_quadrature.h"
+#include "xfem/integrate/straight_front_rule.h"
 #include "xfem/solve/cholmod_solver.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/integrate/element_stiffness.h"
@@ -444,12 +446,18 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
     // Each element matrix depends on its tet alone: computed in a few threads, the same bits.
     parallel_for(static_cast<long>(stale.size()), [&](long begin, long end) {
       PointRule points;
+      ClosedFormWorkspace work;
       for (long i = begin; i < end; ++i) {
         Element& element = *slots[i];
         if (conforming) {
-          conforming_rule(sub, splits, static_cast<int>(i), problem.order, points);
-          element_stiffness_at_points(sub, static_cast<int>(i), points, body_.materials.lame(stale[i]), element.k,
-                                      problem.order);
+          // As xfem-assemble's default (assembly.cpp): the closed-form blocks, a tet by a straight
+          // front by straight_front_rule, the others on the exact pieces' rule of order n.
+          const int t = static_cast<int>(i), angle_points = straight_front_angle_points(problem.order);
+          const bool straight = sub.branch(t) && straight_front_rule(sub, splits, t, angle_points, work.straight);
+          if (!sub.branch(t) || straight) points.clear();
+          else conforming_rule(sub, splits, t, problem.order, points);
+          closed_form_stiffness(sub, splits, t, points, body_.materials.lame(stale[i]), element.k, problem.order,
+                                nullptr, 0, work, straight ? &work.straight : nullptr, angle_points);
         } else {
           element_stiffness(sub, static_cast<int>(i), rule_, body_.materials.lame(stale[i]), element.k);
         }

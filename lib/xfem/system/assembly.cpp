@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "xfem/integrate/closed_form_stiffness.h"
+#include "xfem/integrate/straight_front_rule.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
@@ -146,8 +147,11 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
       for (long i = begin; i < end; ++i) {
         const int t = enriched[static_cast<std::size_t>(first + i)];
         if (conforming_order > 0 && closed_form) {
-          // Points for the branch functions only: the other blocks need the side volumes alone.
-          if (!em.branch(t)) points.clear();
+          // Points for the branch functions only: the other blocks need the side volumes alone. The
+          // rule of order n integrates a tet beside a straight front without exact pieces.
+          const int angle_points = !graded && !fast && !uniform ? straight_front_angle_points(conforming_order) : 0;
+          const bool straight = angle_points > 0 && em.branch(t) && straight_front_rule(em, splits, t, angle_points, work.straight);
+          if (!em.branch(t) || straight) points.clear();
           else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
           else if (fast) conforming_rule(em, splits, t, TetRuleLayout::fast(), points);
           else if (uniform) conforming_rule(em, splits, t, TetRuleLayout::uniform(conforming_order), points);
@@ -156,7 +160,8 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
           const int consistent = graded ? TetRuleLayout::graded_consistent_order
                                  : fast ? TetRuleLayout::fast_consistent_order
                                  : uniform ? conforming_order - 1 : conforming_order;
-          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces, 0, work);
+          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces, 0, work,
+                                straight ? &work.straight : nullptr, angle_points);
         } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
           element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
