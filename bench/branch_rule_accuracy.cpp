@@ -17,11 +17,14 @@
 //         must give 0: the parts are the whole rule). The worst, 90th percentile and median of each column
 //         over the K tets close the list.
 //   RULE: uniform:N (the conforming rule of order N before issue 35, n points per direction everywhere and
-//         on the faces; N >= 2) or order:N (TetRuleLayout::of_order(N): integration.rule "conforming" --order N) or
+//         on the faces; N >= 2) or order:N (TetRuleLayout::of_order(N) everywhere: the default before straight fronts) or
 //         graded (TetRuleLayout::graded(), integration.rule "graded") or fast (TetRuleLayout::fast(), --rule fast) or
 //         layout:radial,along,across,far,distant,distant_ratio,near_levels,far_levels[,consistent[,far_squared
 //                [,remote,remote_ratio[,remote_symmetric[,far_split_ratio]]]]] (consistent: the order whose consistent shift is taken, faces
 //                consistent_face_points(consistent) per direction)
+//         straight:N[:A[:C]] (the default of order N, integration.rule "conforming": a tet by a straight front by
+//                straight_front_rule with A angle points per stretch, default straight_front_angle_points(N), and
+//                its shift's faces by straight_front_face_integrals; C: the shift's order, 0 none)
 //   RULE@N: the same with N points per direction on the faces the front passes near (an experiment:
 //         branch_gradient_integrals' near_order), e.g. order:3@5.
 #include <algorithm>
