@@ -23,6 +23,10 @@ constexpr double kStretch = 1.5;
 // The farthest a tet's prisms may reach from its centroid, in longest edges (straight_front_rule).
 constexpr double kReach = 100;
 
+// The most a face's barycentric functions may reach at the front line (straight_front_face_integrals):
+// a face at a grazing angle to the line has a thin shadow.
+constexpr double kFaceReach = 1e4;
+
 // Tets whose centroid lies farther than this many longest edges from the line keep the exact
 // pieces (straight_front_rule).
 constexpr double kFar = 2;
@@ -98,13 +102,6 @@ bool find_line(const CrackFront& front, const CutSurface* cut, const std::array<
   return true;
 }
 
-// The angle's points of the triangle (origin, A, B) of the (xi, eta) plane, for the integral
-// int d theta int_0^rho_edge(theta) f rho d rho taken from A to B (negative when B is clockwise of
-// A): visit(unit direction, rho_edge, side, d theta weight) per point. The edge is split where it
-// crosses eta = 0 (the cut behind the front, theta = +-pi; theta = 0 ahead) and parametrized by
-// u = p sinh v along it (p the origin's distance to its line), in which the integrand is analytic
-// in a strip of half-width pi / 2 however close the line passes; stretches longer than kStretch in v
-// are divided. An edge whose line holds the origin bounds no area: no points.
 // Gauss-Legendre rules on [0, 1] of 1 .. n points, made once per tet or face.
 struct GaussTable {
   std::vector<std::vector<double>> nodes, weights;
@@ -128,6 +125,13 @@ int stretch_points(double span, int most) {
   return std::min(most, std::max(2, n));
 }
 
+// The angle's points of the triangle (origin, A, B) of the (xi, eta) plane, for the integral
+// int d theta int_0^rho_edge(theta) f rho d rho taken from A to B (negative when B is clockwise of
+// A): visit(unit direction, rho_edge, side, d theta weight) per point. The edge is split where it
+// crosses eta = 0 (the cut behind the front, theta = +-pi; theta = 0 ahead) and parametrized by
+// u = p sinh v along it (p the origin's distance to its line), in which the integrand is analytic
+// in a strip of half-width pi / 2 however close the line passes; stretches longer than kStretch in v
+// are divided. An edge whose line holds the origin bounds no area: no points.
 template <class Visit>
 void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const GaussTable& gauss, Visit&& visit) {
   const Eigen::Vector2d d = B - A;
@@ -190,9 +194,12 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
     for (int j = i + 1; j < 4; ++j) h = std::max(h, (P[i] - P[j]).norm());
   const double tol = 1e-9 * h;
 
-  // 1. The line (find_line).
+  // 1. The line (find_line). Farther than kFar h from it the integrand is smooth on the tet's scale
+  // and the exact pieces' rule is accurate (and cheaper: radius enrichment makes many such tets).
   Line line;
   if (!find_line(front, cut, P, P.data(), 4, h, line)) return false;
+  const Eigen::Vector3d c_local = line.local(centre);
+  if (c_local.head<2>().norm() > kFar * h) return false;
   int sides[kMaxCuts];  // each cut's side; the branch cut's entry is set per point
   const int cuts = static_cast<int>(em.cuts.size());
   for (int k = 0; k < cuts; ++k)
@@ -206,13 +213,12 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
     sides[branch_cut] = branch_side;
     return pack_sides(sides, cuts);
   };
-  auto local = [&](const Eigen::Vector3d& x) { return line.local(x); };
 
   // 2. The tet in the line's coordinates.
   std::array<Eigen::Vector3d, 4> L;
   std::array<Eigen::Vector2d, 4> q;
   for (int k = 0; k < 4; ++k) {
-    L[k] = local(P[k]);
+    L[k] = line.local(P[k]);
     q[k] = L[k].head<2>();
   }
   // The half-plane behind the front crossing the tet: only a cut tet (two regions) may hold it.
@@ -232,17 +238,14 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
   // (reach / h)^3. A tet whose faces reach beyond kReach h (far from the front, or a face at a
   // small angle to it) keeps the exact pieces; within, the angle gets a point more per factor ~19
   // of amplification (Gauss's rate on a stretch of kStretch).
-  const Eigen::Vector3d c_local = local(centre);
-  // Farther than kFar h from the line the integrand is smooth on the tet's scale and the exact
-  // pieces' rule is accurate (and cheaper: radius enrichment makes many such tets).
-  if (c_local.head<2>().norm() > kFar * h) return false;
   double reach = std::max(h, c_local.head<2>().norm());
   for (int m = 0; m < 4; ++m) {
     int f[3], k = 0;
     for (int v = 0; v < 4; ++v)
       if (v != m) f[k++] = v;
     const Eigen::Vector3d n = (P[f[1]] - P[f[0]]).cross(P[f[2]] - P[f[0]]);
-    if (std::abs(n.dot(line.c)) <= 1e-12 * n.norm()) continue;
+    if (std::abs(n.dot(line.c)) <= 1e-12 * n.norm()) continue;  // parallel to the line: no shadow
+    if (std::abs(n.dot(line.c)) < 1e-6 * n.norm()) return false;  // nearly: its prism's height cancels in round-off
     const double z = L[f[0]].z() + (n.dot(line.a) * L[f[0]].x() + n.dot(line.b) * L[f[0]].y()) / n.dot(line.c);
     reach = std::max(reach, Eigen::Vector3d(-c_local.x(), -c_local.y(), z - c_local.z()).norm());
   }
@@ -255,7 +258,7 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
   std::vector<double> gs, gsw, gt, gtw;
   gauss_legendre_01(4, gs, gsw);
   gauss_legendre_01(2, gt, gtw);
-  const double zeta0 = local(centre).z();
+  const double zeta0 = c_local.z();
   PointRule negative;
   std::vector<TipCoordinates> negative_tips;
   TipCoordinates tip;
@@ -268,8 +271,7 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
     Eigen::Vector3d normal = (P[f[1]] - P[f[0]]).cross(P[f[2]] - P[f[0]]);
     if (normal.dot(P[m] - P[f[0]]) > 0) normal = -normal;  // outward
     const double nc = normal.dot(line.c) / normal.norm();
-    if (std::abs(nc) <= 1e-12) continue;  // parallel to the line: no shadow
-    if (std::abs(nc) < 1e-6) return false;  // nearly: the prisms' heights would cancel in round-off
+    if (std::abs(nc) <= 1e-12) continue;  // parallel to the line (section 3)
     const double na = normal.dot(line.a), nb = normal.dot(line.b), nz = normal.dot(line.c);
     const Eigen::Vector3d& F0 = L[f[0]];
     auto plane_zeta = [&](double xi, double eta) { return F0.z() - (na * (xi - F0.x()) + nb * (eta - F0.y())) / nz; };
@@ -340,7 +342,18 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
   if (area2 == 0) return false;
   normal /= area2;
   const double nc = normal.dot(line.c);
-  const GaussTable angles(angle_points);
+  // As the tet's prisms (straight_front_rule, section 3): the triangles (origin, edge) reach the line,
+  // where N_v extrapolates to |N_v(origin)|, by which the angle's error is amplified (up to kFaceReach).
+  double amplification = 1;
+  if (std::abs(nc) > 1e-6) {
+    Eigen::Matrix2d J;
+    J << (L[1] - L[0]).head<2>(), (L[2] - L[0]).head<2>();
+    const Eigen::Vector2d st = J.inverse() * (-L[0].head<2>());
+    const double most = std::max({std::abs(1 - st.x() - st.y()), std::abs(st.x()), std::abs(st.y()), 1.0});
+    if (most > kFaceReach) return false;
+    amplification = most;
+  }
+  const GaussTable angles(angle_points + static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4))));
   std::vector<double> gs, gsw, gt, gtw;
   gauss_legendre_01(4, gs, gsw);
   TipCoordinates tip;
