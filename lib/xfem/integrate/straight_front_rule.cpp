@@ -102,14 +102,22 @@ bool find_line(const CrackFront& front, const CutSurface* cut, const std::array<
   return true;
 }
 
-// Gauss-Legendre rules on [0, 1] of 1 .. n points, made once per tet or face.
+// Gauss-Legendre rules on [0, 1]: nodes[k], weights[k] of k points.
 struct GaussTable {
   std::vector<std::vector<double>> nodes, weights;
-  explicit GaussTable(int n) : nodes(n + 1), weights(n + 1) {
-    for (int k = 1; k <= n; ++k) gauss_legendre_01(k, nodes[k], weights[k]);
-  }
-  int most() const { return static_cast<int>(nodes.size()) - 1; }
 };
+
+// The rules of 1 .. max(n, 4) points, made once per thread and kept (gauss_legendre_01's Newton
+// iterations took 3 % of the beam's assembly when made per tet). Valid until the next call.
+const GaussTable& gauss_table(int n) {
+  thread_local GaussTable table;
+  for (int k = static_cast<int>(table.nodes.size()); k <= std::max(n, 4); ++k) {
+    table.nodes.emplace_back();
+    table.weights.emplace_back();
+    if (k > 0) gauss_legendre_01(k, table.nodes[k], table.weights[k]);
+  }
+  return table;
+}
 
 // Points for a stretch of length `span` in v: `most` for a stretch of kStretch, fewer for shorter
 // ones. Gauss's error on an interval of half-length l for a function analytic in |Im v| < pi / 2
@@ -133,7 +141,7 @@ int stretch_points(double span, int most) {
 // in a strip of half-width pi / 2 however close the line passes; stretches longer than kStretch in v
 // are divided. An edge whose line holds the origin bounds no area: no points.
 template <class Visit>
-void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const GaussTable& gauss, Visit&& visit) {
+void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const GaussTable& gauss, int most, Visit&& visit) {
   const Eigen::Vector2d d = B - A;
   const double length = d.norm();
   if (length == 0) return;
@@ -156,7 +164,7 @@ void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const Gauss
     const int pieces = std::max(1, static_cast<int>(std::ceil((v1 - v0) / kStretch)));
     for (int piece = 0; piece < pieces; ++piece) {
       const double va = v0 + (v1 - v0) * piece / pieces, span = (v1 - v0) / pieces;
-      const int n = stretch_points(span, gauss.most());
+      const int n = stretch_points(span, most);
       const std::vector<double>&nodes = gauss.nodes[n], &weights = gauss.weights[n];
       for (std::size_t i = 0; i < nodes.size(); ++i) {
         const double v = va + span * nodes[i];
@@ -254,10 +262,9 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
   const int extra = static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4)));
 
   // 4. The points: faces not parallel to c, each face's shadow by the triangles (origin, edge).
-  const GaussTable angles(angle_points + std::max(0, extra));
-  std::vector<double> gs, gsw, gt, gtw;
-  gauss_legendre_01(4, gs, gsw);
-  gauss_legendre_01(2, gt, gtw);
+  const int most = angle_points + std::max(0, extra);
+  const GaussTable& angles = gauss_table(most);
+  const std::vector<double>&gs = angles.nodes[4], &gsw = angles.weights[4], &gt = angles.nodes[2], &gtw = angles.weights[2];
   const double zeta0 = c_local.z();
   PointRule negative;
   std::vector<TipCoordinates> negative_tips;
@@ -278,7 +285,7 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
     const double orient = cross2(q[f[1]] - q[f[0]], q[f[2]] - q[f[0]]) > 0 ? 1.0 : -1.0;
     const double face_sign = (nc > 0 ? 1.0 : -1.0) * orient;
     for (int e = 0; e < 3; ++e)
-      edge_angles(q[f[e]], q[f[(e + 1) % 3]], angles, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
+      edge_angles(q[f[e]], q[f[(e + 1) % 3]], angles, most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
         for (std::size_t is = 0; is < gs.size(); ++is) {
           const double sigma = gs[is], rho = rho_edge * sigma * sigma;
           const double radial = 2 * rho_edge * rho_edge * sigma * sigma * sigma * gsw[is];  // rho d rho
@@ -353,9 +360,9 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
     if (most > kFaceReach) return false;
     amplification = most;
   }
-  const GaussTable angles(angle_points + static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4))));
-  std::vector<double> gs, gsw, gt, gtw;
-  gauss_legendre_01(4, gs, gsw);
+  const int most = angle_points + static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4)));
+  const GaussTable& angles = gauss_table(most);
+  const std::vector<double>&gs = angles.nodes[4], &gsw = angles.weights[4], &gt = angles.nodes[2], &gtw = angles.weights[2];
   TipCoordinates tip;
   tip.grad.row(0) = line.a.transpose();
   tip.grad.row(1) = line.b.transpose();
@@ -377,7 +384,7 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
     const double sign = J.determinant() > 0 ? 1.0 : -1.0;
     const double scale = sign / std::abs(nc);
     for (int e = 0; e < 3; ++e)
-      edge_angles(q[e], q[(e + 1) % 3], angles, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
+      edge_angles(q[e], q[(e + 1) % 3], angles, most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
         for (std::size_t is = 0; is < gs.size(); ++is) {
           const double sigma = gs[is];
           const Eigen::Vector2d x = rho_edge * sigma * sigma * unit;
@@ -395,7 +402,6 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
   // (s, zeta) is cut at its middle corner's s, where eta = 0 and (p = 0) at s = 0; each stretch in
   // u = p sinh v (p > 0) or |s| = w^2 (p = 0, l through the origin: F = sqrt(|s|) f), zeta by 2
   // Gauss points (N_v linear in it).
-  gauss_legendre_01(2, gt, gtw);
   Eigen::Vector2d dir = Eigen::Vector2d::Zero();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
