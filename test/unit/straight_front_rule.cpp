@@ -122,9 +122,9 @@ TEST_CASE("straight_front_rule: the first moments per side equal the exact piece
     xfem::conforming_rule(b.em, b.splits, t, xfem::TetRuleLayout::uniform(7), pieces);
     const int n = 3 * b.em.size(t);
     Eigen::MatrixXd gs(rule.points.size(), n), gp(pieces.size(), n);
-    std::vector<xfem::TipCoordinates> tips = rule.tips, none;
-    xfem::sampled_gradients(b.em, t, rule.points, 0, nullptr, std::vector<int>(), gs, tips, 0, true);
-    xfem::sampled_gradients(b.em, t, pieces, 0, nullptr, std::vector<int>(), gp, none);
+    std::vector<xfem::TipCoordinates> tips;
+    xfem::sampled_gradients(b.em, t, rule.points, 0, nullptr, std::vector<int>(), gs, tips, 0, &rule.tips);
+    xfem::sampled_gradients(b.em, t, pieces, 0, nullptr, std::vector<int>(), gp, tips);
     // A cut tet's pieces are split by the cut's plane (ahead of the front too): its sides compared
     // apart. An uncut tet is one piece of side 0, which no rule splits: its whole integral.
     const bool split = b.splits.index[t] >= 0;

@@ -73,9 +73,8 @@ Eigen::Map<Eigen::MatrixXd, Eigen::AlignedMax> closed_form_moments(
     const int q = rule.size();
     // b_p, then overwritten by B: row p sqrt(|w_p|) b_p (the branch columns only: the others are not used)
     auto B = work.B.view(q, nb);
-    if (straight) work.tips = straight->tips;
     sampled_gradients(em, t, rule, consistent_order, face_cache, b_cols, B, work.tips, near_face_points,
-                      straight != nullptr, straight_face_points);
+                      straight ? &straight->tips : nullptr, straight_face_points);
     auto sums = work.sums.view(R, nb);  // row r: sum over p in r of w_p b_p
     sums.setZero();
     for (int p = 0; p < q; ++p) {

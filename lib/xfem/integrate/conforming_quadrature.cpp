@@ -429,7 +429,8 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, const std::vector<int>& columns,
                        Eigen::Ref<Eigen::MatrixXd> gradients, std::vector<TipCoordinates>& tips,
-                       int near_face_points, bool tips_given, int straight_face_points) {
+                       int near_face_points, const std::vector<TipCoordinates>* given_tips,
+                       int straight_face_points) {
   const TetShape shape = tet_shape(em.mesh, t);
   const int n = em.size(t), q = rule.size();
   const int m = columns.empty() ? 3 * n : static_cast<int>(columns.size());
@@ -441,17 +442,18 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
   const bool branch = em.branch(t);
   // The crack-tip coordinates of a branch tet's points together (CrackFront::coordinates of many
   // points): the same bits as a search of the whole front per point.
-  const bool near_front = tips_given || (branch && em.cuts.empty() && !em.front.empty() && q > 0);
-  if (tips_given && static_cast<int>(tips.size()) != q)
-    throw Error("sampled gradients of tet " + std::to_string(t) + ": " + std::to_string(tips.size()) +
+  if (given_tips && static_cast<int>(given_tips->size()) != q)
+    throw Error("sampled gradients of tet " + std::to_string(t) + ": " + std::to_string(given_tips->size()) +
                 " crack-tip coordinates given for " + std::to_string(q) + " points");
-  if (near_front && !tips_given) {
+  const bool near_front = given_tips || (branch && em.cuts.empty() && !em.front.empty() && q > 0);
+  if (near_front && !given_tips) {
     tips.resize(q);
     em.front.coordinates(rule.x.data(), q, tips.data());
   }
+  const std::vector<TipCoordinates>& at = given_tips ? *given_tips : tips;
   for (int p = 0; p < q; ++p) {
     if (near_front)
-      enriched_basis(em, t, shape, rule.x[p], rule.side[p], tips[p], b);
+      enriched_basis(em, t, shape, rule.x[p], rule.side[p], at[p], b);
     else
       enriched_basis(em, t, shape, rule.x[p], rule.side[p], b);
     for (int i = 0; i < m; ++i) gradients(p, i) = b.dN(column(i) / 3, column(i) % 3);

@@ -189,13 +189,15 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
 /// points' crack-tip coordinates: both kept by the caller from one tet to the next, so that no
 /// memory is allocated per tet (scratch_matrix.h says why), and only the columns used are stored
 /// (the closed form needs the branch ones alone). The same bits as those columns of the above.
-/// `tips_given`: `tips` holds the points' crack-tip coordinates already (straight_front_rule's,
-/// whose points lie outside the tet, where the front's own would not be the line's).
+/// `given_tips` (optional): the points' crack-tip coordinates, one per point, used instead of the
+/// front's (straight_front_rule's, whose points lie outside the tet, where the front's own would
+/// not be the line's); `tips` is then not touched.
 /// `straight_face_points`: branch_gradient_integrals' straight_angle_points.
 void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int consistent_order,
                        FaceIntegralCache* face_cache, const std::vector<int>& columns,
                        Eigen::Ref<Eigen::MatrixXd> gradients, std::vector<TipCoordinates>& tips,
-                       int near_face_points = 0, bool tips_given = false, int straight_face_points = 0);
+                       int near_face_points = 0, const std::vector<TipCoordinates>* given_tips = nullptr,
+                       int straight_face_points = 0);
 
 /// Stiffness of formula (5) of tet t (3|C| x 3|C|, order of its C, N/m) integrated with `rule`
 /// (the enriched basis evaluated at each point with the point's side). Same layout as

@@ -27,7 +27,7 @@ void element_points(const EnrichedMesh& em, const CutElementSplits& splits, int 
   const int straight_points = straight_front_angle_points(order);
   Eigen::MatrixXd gradients(rule.size(), 3 * n);
   std::vector<TipCoordinates> tips;
-  sampled_gradients(em, t, rule, order, face_cache, std::vector<int>(), gradients, tips, 0, false, straight_points);
+  sampled_gradients(em, t, rule, order, face_cache, std::vector<int>(), gradients, tips, 0, nullptr, straight_points);
   const bool branch = em.branch(t);
   const int q = rule.size();
   out.correction.resize(0, 0);
