@@ -29,6 +29,18 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
                          material, k);
 }
 
+void default_rule_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, int order,
+                            const Lame& material, Eigen::MatrixXd& k, FaceIntegralCache* face_cache,
+                            ClosedFormWorkspace& work, PointRule& points) {
+  // Points for the branch functions only: the other blocks need the side volumes alone.
+  const int angle_points = straight_front_angle_points(order);
+  const bool straight = em.branch(t) && straight_front_rule(em, splits, t, angle_points, work.straight);
+  if (!em.branch(t) || straight) points.clear();
+  else conforming_rule(em, splits, t, order, points);
+  closed_form_stiffness(em, splits, t, points, material, k, order, face_cache, 0, work,
+                        straight ? &work.straight : nullptr, angle_points);
+}
+
 Eigen::Map<Eigen::MatrixXd, Eigen::AlignedMax> closed_form_moments(
     const EnrichedMesh& em, const CutElementSplits& splits, int t, const PointRule& branch_rule, int consistent_order,
     FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work, const StraightFrontRule* straight,

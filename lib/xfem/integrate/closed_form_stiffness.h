@@ -57,6 +57,13 @@ void closed_form_stiffness(const EnrichedMesh& em, const CutElementSplits& split
                            const Lame& material, Eigen::MatrixXd& k, int consistent_order,
                            FaceIntegralCache* face_cache, int near_face_points, ClosedFormWorkspace& work,
                            const StraightFrontRule* straight = nullptr, int straight_face_points = 0);
+/// The default rule of order n (integration.rule "conforming"), what xfem-assemble and xfem-sweep
+/// both compute, so that they agree: a tet with branch DOFs by a straight front by
+/// straight_front_rule, any other on the exact pieces' rule of order n (conforming_rule), the
+/// blocks in closed form with the shift's faces by a straight front exact. `points`: a buffer.
+void default_rule_stiffness(const EnrichedMesh& em, const CutElementSplits& splits, int t, int order,
+                            const Lame& material, Eigen::MatrixXd& k, FaceIntegralCache* face_cache,
+                            ClosedFormWorkspace& work, PointRule& points);
 /// The moments S of the above (3|C| x 3|C|, k = stiffness_from_moments(S)), a view into `work`
 /// valid until its next use: for the nonlinear path's straight-front correction (element_points.h).
 Eigen::Map<Eigen::MatrixXd, Eigen::AlignedMax> closed_form_moments(

@@ -11,7 +11,6 @@
 #include "xfem/system/assembly.h"
 #include "xfem/integrate/closed_form_stiffness.h"
 #include "xfem/integrate/conforming_quadrature.h"
-#include "xfem/integrate/straight_front_rule.h"
 #include "xfem/solve/cholmod_solver.h"
 #include "xfem/enrich/dof_numbering.h"
 #include "xfem/integrate/element_stiffness.h"
@@ -450,14 +449,9 @@ CutSolution ProgressiveCut::step(std::shared_ptr<const CutSurface> cut, const st
       for (long i = begin; i < end; ++i) {
         Element& element = *slots[i];
         if (conforming) {
-          // As xfem-assemble's default (assembly.cpp): the closed-form blocks, a tet by a straight
-          // front by straight_front_rule, the others on the exact pieces' rule of order n.
-          const int t = static_cast<int>(i), angle_points = straight_front_angle_points(problem.order);
-          const bool straight = sub.branch(t) && straight_front_rule(sub, splits, t, angle_points, work.straight);
-          if (!sub.branch(t) || straight) points.clear();
-          else conforming_rule(sub, splits, t, problem.order, points);
-          closed_form_stiffness(sub, splits, t, points, body_.materials.lame(stale[i]), element.k, problem.order,
-                                nullptr, 0, work, straight ? &work.straight : nullptr, angle_points);
+          // As xfem-assemble's default (assembly.cpp).
+          default_rule_stiffness(sub, splits, static_cast<int>(i), problem.order, body_.materials.lame(stale[i]),
+                                 element.k, nullptr, work, points);
         } else {
           element_stiffness(sub, static_cast<int>(i), rule_, body_.materials.lame(stale[i]), element.k);
         }

@@ -9,7 +9,6 @@
 #include <numeric>
 
 #include "xfem/integrate/closed_form_stiffness.h"
-#include "xfem/integrate/straight_front_rule.h"
 #include "xfem/integrate/conforming_quadrature.h"
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/core/error.h"
@@ -146,22 +145,20 @@ SparseMatrix stiffness_matrix(const EnrichedMesh& em, const TetMaterials& materi
       FaceIntegralCache faces;
       for (long i = begin; i < end; ++i) {
         const int t = enriched[static_cast<std::size_t>(first + i)];
-        if (conforming_order > 0 && closed_form) {
-          // Points for the branch functions only: the other blocks need the side volumes alone. The
-          // rule of order n integrates a tet beside a straight front without exact pieces.
-          const int angle_points = !graded && !fast && !uniform ? straight_front_angle_points(conforming_order) : 0;
-          const bool straight = angle_points > 0 && em.branch(t) && straight_front_rule(em, splits, t, angle_points, work.straight);
-          if (!em.branch(t) || straight) points.clear();
+        if (conforming_order > 0 && closed_form && !graded && !fast && !uniform) {
+          default_rule_stiffness(em, splits, t, conforming_order, materials.lame(t), ks[i], &faces, work, points);
+        } else if (conforming_order > 0 && closed_form) {
+          // The comparison rules: points for the branch functions only, the other blocks from the
+          // side volumes alone; no straight-front reduction.
+          if (!em.branch(t)) points.clear();
           else if (graded) conforming_rule(em, splits, t, TetRuleLayout::graded(), points);
           else if (fast) conforming_rule(em, splits, t, TetRuleLayout::fast(), points);
-          else if (uniform) conforming_rule(em, splits, t, TetRuleLayout::uniform(conforming_order), points);
-          else conforming_rule(em, splits, t, conforming_order, points);
+          else conforming_rule(em, splits, t, TetRuleLayout::uniform(conforming_order), points);
           // The consistent shift of the rule's order; uniform(n) had n face points (consistent_face_points).
           const int consistent = graded ? TetRuleLayout::graded_consistent_order
                                  : fast ? TetRuleLayout::fast_consistent_order
-                                 : uniform ? conforming_order - 1 : conforming_order;
-          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces, 0, work,
-                                straight ? &work.straight : nullptr, angle_points);
+                                 : conforming_order - 1;
+          closed_form_stiffness(em, splits, t, points, materials.lame(t), ks[i], consistent, &faces, 0, work);
         } else if (conforming_order > 0) {
           conforming_rule(em, splits, t, conforming_order, points);
           element_stiffness_at_points(em, t, points, materials.lame(t), ks[i], conforming_order, &faces);
