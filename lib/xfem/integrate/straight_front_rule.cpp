@@ -240,28 +240,47 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
   const SideVolumes regions = side_volumes(em.mesh, splits, t);
   if (regions.size() > 2 || (regions.size() == 1 && crossed_behind)) return false;
 
-  // 3. How far the prisms reach: from zeta0 to each face's plane over its triangles (origin, edge),
+  // 3. The faces not parallel to c (a face parallel to it has no shadow): each one's corners, its
+  // outward normal's (a, b, c) components, for its plane zeta = Z(xi, eta), and the sign of its prism.
+  // And how far the prisms reach: from zeta0 to each face's plane over its triangles (origin, edge),
   // so to Z(0, 0) on the line. The integrand grows like (reach / h)^2 there (N_l linear) and the
   // prisms' contributions cancel to the tet's: their angle sampling's error is amplified by about
   // (reach / h)^3. A tet whose faces reach beyond kReach h (far from the front, or a face at a
   // small angle to it) keeps the exact pieces; within, the angle gets a point more per factor ~19
   // of amplification (Gauss's rate on a stretch of kStretch).
+  struct Face {
+    int corner[3];
+    Eigen::Vector3d n;
+    double sign;
+    double zeta(const std::array<Eigen::Vector3d, 4>& L, double xi, double eta) const {
+      const Eigen::Vector3d& F0 = L[corner[0]];
+      return F0.z() - (n.x() * (xi - F0.x()) + n.y() * (eta - F0.y())) / n.z();
+    }
+  };
+  std::array<Face, 4> faces;
+  int face_count = 0;
   double reach = std::max(h, c_local.head<2>().norm());
   for (int m = 0; m < 4; ++m) {
-    int f[3], k = 0;
-    for (int v = 0; v < 4; ++v)
-      if (v != m) f[k++] = v;
-    const Eigen::Vector3d n = (P[f[1]] - P[f[0]]).cross(P[f[2]] - P[f[0]]);
-    if (std::abs(n.dot(line.c)) <= 1e-12 * n.norm()) continue;  // parallel to the line: no shadow
-    if (std::abs(n.dot(line.c)) < 1e-6 * n.norm()) return false;  // nearly: its prism's height cancels in round-off
-    const double z = L[f[0]].z() + (n.dot(line.a) * L[f[0]].x() + n.dot(line.b) * L[f[0]].y()) / n.dot(line.c);
-    reach = std::max(reach, Eigen::Vector3d(-c_local.x(), -c_local.y(), z - c_local.z()).norm());
+    Face& face = faces[face_count];
+    for (int v = 0, k = 0; v < 4; ++v)
+      if (v != m) face.corner[k++] = v;
+    const int* f = face.corner;
+    Eigen::Vector3d normal = (P[f[1]] - P[f[0]]).cross(P[f[2]] - P[f[0]]);
+    if (normal.dot(P[m] - P[f[0]]) > 0) normal = -normal;  // outward
+    const double nc = normal.dot(line.c) / normal.norm();
+    if (std::abs(nc) <= 1e-12) continue;  // parallel to the line: no shadow
+    if (std::abs(nc) < 1e-6) return false;  // nearly: its prism's height cancels in round-off
+    face.n = Eigen::Vector3d(normal.dot(line.a), normal.dot(line.b), normal.dot(line.c));
+    const double orient = cross2(q[f[1]] - q[f[0]], q[f[2]] - q[f[0]]) > 0 ? 1.0 : -1.0;
+    face.sign = (nc > 0 ? 1.0 : -1.0) * orient;
+    reach = std::max(reach, Eigen::Vector3d(-c_local.x(), -c_local.y(), face.zeta(L, 0, 0) - c_local.z()).norm());
+    ++face_count;
   }
   if (reach > kReach * h) return false;
   const double amplification = std::pow(reach / h, 3);
   const int extra = static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4)));
 
-  // 4. The points: faces not parallel to c, each face's shadow by the triangles (origin, edge).
+  // 4. The points: each face's prism, its shadow by the triangles (origin, edge).
   const int most = angle_points + std::max(0, extra);
   const GaussTable& angles = gauss_table(most);
   const std::vector<double>&gs = angles.nodes[4], &gsw = angles.weights[4], &gt = angles.nodes[2], &gtw = angles.weights[2];
@@ -271,28 +290,18 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
   TipCoordinates tip;
   tip.grad.row(0) = line.a.transpose();
   tip.grad.row(1) = line.b.transpose();
-  for (int m = 0; m < 4; ++m) {
-    int f[3], k = 0;
-    for (int v = 0; v < 4; ++v)
-      if (v != m) f[k++] = v;
-    Eigen::Vector3d normal = (P[f[1]] - P[f[0]]).cross(P[f[2]] - P[f[0]]);
-    if (normal.dot(P[m] - P[f[0]]) > 0) normal = -normal;  // outward
-    const double nc = normal.dot(line.c) / normal.norm();
-    if (std::abs(nc) <= 1e-12) continue;  // parallel to the line (section 3)
-    const double na = normal.dot(line.a), nb = normal.dot(line.b), nz = normal.dot(line.c);
-    const Eigen::Vector3d& F0 = L[f[0]];
-    auto plane_zeta = [&](double xi, double eta) { return F0.z() - (na * (xi - F0.x()) + nb * (eta - F0.y())) / nz; };
-    const double orient = cross2(q[f[1]] - q[f[0]], q[f[2]] - q[f[0]]) > 0 ? 1.0 : -1.0;
-    const double face_sign = (nc > 0 ? 1.0 : -1.0) * orient;
+  for (int i = 0; i < face_count; ++i) {
+    const Face& face = faces[i];
+    const int* f = face.corner;
     for (int e = 0; e < 3; ++e)
       edge_angles(q[f[e]], q[f[(e + 1) % 3]], angles, most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
         for (std::size_t is = 0; is < gs.size(); ++is) {
           const double sigma = gs[is], rho = rho_edge * sigma * sigma;
           const double radial = 2 * rho_edge * rho_edge * sigma * sigma * sigma * gsw[is];  // rho d rho
           const double xi = rho * unit.x(), eta = rho * unit.y();
-          const double height = plane_zeta(xi, eta) - zeta0;
+          const double height = face.zeta(L, xi, eta) - zeta0;
           for (std::size_t it = 0; it < gt.size(); ++it) {
-            const double w = face_sign * dtheta * radial * height * gtw[it];
+            const double w = face.sign * dtheta * radial * height * gtw[it];
             if (w == 0) continue;
             const double zeta = zeta0 + gt[it] * height;
             PointRule& to = w > 0 ? out.points : negative;
