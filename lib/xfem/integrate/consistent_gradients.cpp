@@ -50,12 +50,12 @@ std::array<Eigen::Matrix<double, 3, 4>, 2> face_integrals(const CutSurface* cut,
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (const auto& v : part) centre += v;
     centre /= static_cast<double>(part.size());
-    // The side whose F the part shows each tet: its own, or for a part lying on the cut, the side
-    // the tet is on (the one its outward normal points away from).
     polygon_gauss_rule(part, polygon_fan_apex(part, normal, face_fronts, face_tolerance), depth, face_fronts, nodes, weights, x, w);
     // The crack-tip coordinates of the part's points together (the same bits as one by one).
     tips.resize(x.size());
     front.coordinates(x.data(), static_cast<int>(x.size()), tips.data());
+    // The side whose F the part shows each tet: its own, or for a part lying on the cut, the side
+    // the tet is on (the one its outward normal points away from).
     std::array<int, 2> side = {0, 0};
     if (cut) {
       const CutSurface::Closest near = cut->closest(centre);
