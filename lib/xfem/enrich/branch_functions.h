@@ -27,7 +27,8 @@ struct BranchValues {
 BranchValues branch_functions(const CrackTipFrame& frame, const Eigen::Vector3d& x, int side = 0);
 
 /// The same from crack-tip coordinates and their gradients (CrackFront::coordinates, continuous
-/// along a curved front): r = hypot(xa, xb), theta = atan2(xb, xa). With `side` given, a point
+/// along a curved front): r = sqrt(xa^2 + xb^2), theta = atan2(xb, xa) (evaluated without trigonometric
+/// functions: branch_functions.cpp). With `side` given, a point
 /// behind the front (xa < 0) whose xb has the other sign than its side (it lies between the plane
 /// of b and a cut that curves away from it) gets theta = side * pi, with d theta = 0 there: theta
 /// is +-pi exactly on the cut's faces and F is continuous everywhere off the cut.
