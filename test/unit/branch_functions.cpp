@@ -52,6 +52,47 @@ TEST_CASE("branch_functions: a point on the cut takes the face it is asked for",
   CHECK(tip.dF.norm() == 0.0);
 }
 
+TEST_CASE("branch_functions: the values of the definition with atan2, sin and cos in every direction",
+          "[branch_functions]") {
+  // branch_functions takes sin and cos of theta and theta/2 from (xa, xb, r) without trigonometric
+  // functions: they must be the definition's, F = sqrt r (sin t/2, cos t/2, sin t/2 sin t,
+  // cos t/2 sin t) with t = atan2(xb, xa), to round-off, all round the front and at every scale.
+  auto definition = [](double xa, double xb) {
+    const double r = std::hypot(xa, xb), t = std::atan2(xb, xa), sr = std::sqrt(r);
+    return Eigen::Vector4d(sr * std::sin(t / 2), sr * std::cos(t / 2), sr * std::sin(t / 2) * std::sin(t),
+                           sr * std::cos(t / 2) * std::sin(t));
+  };
+  double worst = 0;
+  for (const double r : {1e-9, 1e-3, 0.37, 250.0})
+    for (int k = 0; k <= 720; ++k) {
+      const double t = -M_PI + 2 * M_PI * k / 720.0;
+      xfem::TipCoordinates tc;
+      tc.xa = r * std::cos(t);
+      tc.xb = k == 0 ? -0.0 : k == 720 ? 0.0 : r * std::sin(t);  // -pi and pi: atan2 goes by xb's sign
+      tc.grad.setZero();
+      const Eigen::Vector4d F = xfem::branch_functions(tc, 0).F;
+      const Eigen::Vector4d expected = definition(tc.xa, tc.xb);
+      worst = std::max(worst, (F - expected).cwiseAbs().maxCoeff() / std::sqrt(r));
+    }
+  CAPTURE(worst);
+  CHECK(worst < 1e-15);  // measured 3.7e-16: both sides round
+  // On the cut's plane behind the front: xb = -0 is the lower face, as atan2 has it, and a side given
+  // puts the point on that face whatever xb's rounding; a clamped point (the other sign of xb than its
+  // side) has theta = side * pi exactly, F = sqrt r (side, 0, 0, 0).
+  xfem::TipCoordinates tc;
+  tc.grad.setZero();
+  tc.xa = -0.25;
+  tc.xb = -0.0;
+  CHECK(xfem::branch_functions(tc, 0).F == Eigen::Vector4d(-0.5, 0.0, 0.0, 0.0));
+  tc.xb = 0.0;
+  CHECK(xfem::branch_functions(tc, 0).F == Eigen::Vector4d(0.5, 0.0, 0.0, 0.0));
+  tc.xb = 1e-14;
+  CHECK(xfem::branch_functions(tc, -1).F == Eigen::Vector4d(-0.5, 0.0, 0.0, 0.0));
+  tc.xb = 0.01;  // above the plane, on the lower face: clamped
+  const xfem::BranchValues clamped = xfem::branch_functions(tc, -1);
+  CHECK(clamped.F == Eigen::Vector4d(-std::sqrt(std::hypot(-0.25, 0.01)), 0.0, 0.0, 0.0));
+}
+
 TEST_CASE("branch_functions: gradients match central finite differences", "[branch_functions]") {
   // A tilted frame so that every component of R matters.
   const Eigen::Vector3d b = Eigen::Vector3d(0.2, -0.3, 1.0).normalized();
