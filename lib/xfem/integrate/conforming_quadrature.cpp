@@ -101,6 +101,17 @@ void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& w
   }
 }
 
+const GaussRule01& gauss_legendre_rule_01(int n) {
+  if (n < 1 || n > 64) throw Error("Gauss-Legendre rule: order must be in 1..64, got " + std::to_string(n));
+  // Made on first use, every order at once (a static's initialisation is thread-safe).
+  static const std::vector<GaussRule01> rules = [] {
+    std::vector<GaussRule01> all(65);
+    for (int k = 1; k <= 64; ++k) gauss_legendre_01(k, all[k].nodes, all[k].weights);
+    return all;
+  }();
+  return rules[static_cast<std::size_t>(n)];
+}
+
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                       const Eigen::Vector3d& d, int n, int side, PointRule& out) {
   append_edge_rule(a, b, c, d, n, n, n, side, out);
@@ -109,10 +120,11 @@ void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
 void append_edge_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                       const Eigen::Vector3d& d, int radial, int along, int across, int side, PointRule& out,
                       bool squared) {
-  std::vector<double> g, gw, ga, gaw, gc, gcw;
-  gauss_legendre_01(radial, g, gw);
-  gauss_legendre_01(along, ga, gaw);
-  gauss_legendre_01(across, gc, gcw);
+  const GaussRule01 &rule_radial = gauss_legendre_rule_01(radial), &rule_along = gauss_legendre_rule_01(along),
+                    &rule_across = gauss_legendre_rule_01(across);
+  const std::vector<double>&g = rule_radial.nodes, &gw = rule_radial.weights;
+  const std::vector<double>&ga = rule_along.nodes, &gaw = rule_along.weights;
+  const std::vector<double>&gc = rule_across.nodes, &gcw = rule_across.weights;
   // |det(b-a, c-a, d-c)| = 6 V: the volume is the integral of 6 V s (1-s) over the unit cube.
   const double six_v = std::abs((b - a).cross(c - a).dot(d - c));
   for (int i = 0; i < radial; ++i) {
@@ -137,9 +149,9 @@ void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 
 void append_vertex_rule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                         const Eigen::Vector3d& d, int radial, int across, int side, PointRule& out) {
-  std::vector<double> g, gw, gc, gcw;
-  gauss_legendre_01(radial, g, gw);
-  gauss_legendre_01(across, gc, gcw);
+  const GaussRule01 &rule_radial = gauss_legendre_rule_01(radial), &rule_across = gauss_legendre_rule_01(across);
+  const std::vector<double>&g = rule_radial.nodes, &gw = rule_radial.weights;
+  const std::vector<double>&gc = rule_across.nodes, &gcw = rule_across.weights;
   const double six_v = std::abs((b - a).cross(c - a).dot(d - a));
   for (int i = 0; i < radial; ++i) {
     const double sigma = g[i], u = sigma * sigma;

@@ -49,6 +49,14 @@ struct PointRule {
 /// polynomials of degree 2n - 1. Throws xfem::Error outside 1..64.
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
+/// The same rule, made once per process and kept: for callers that take a rule per piece or per
+/// tet (gauss_legendre_01's Newton iterations and the vectors' allocations cost more than the rule's
+/// use there). The same numbers as gauss_legendre_01(n, ...). Throws xfem::Error outside 1..64.
+struct GaussRule01 {
+  std::vector<double> nodes, weights;
+};
+const GaussRule01& gauss_legendre_rule_01(int n);
+
 /// Edge-Duffy rule of the tet (a, b, c, d) collapsed on edge ab: x(s,t,w) = (1-s)(a + t(b-a)) +
 /// s(c + w(d-c)), Jacobian 6 V s (1-s), s = sigma^2, n Gauss points in each of sigma, t, w
 /// (n^3 points appended to `out` with `side`). Integrands ~ 1/r and r^(-1/2), r the distance to

@@ -113,12 +113,12 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> branch_gradient_integrals(const Enriche
   const CutSurface* const cut = cut_of_tet(em, t);
   const CrackFront& front = front_of_tet(em, t);
 
-  std::vector<double> nodes, weights;
-  gauss_legendre_01(order, nodes, weights);
+  const GaussRule01& face_rule = gauss_legendre_rule_01(order);
+  const std::vector<double>&nodes = face_rule.nodes, &weights = face_rule.weights;
   // Subdivision near the front pays only for accurate rules (as the volume rule's bisection).
   const int depth = std::max(0, order - 3);
-  std::vector<double> near_nodes, near_weights;
-  if (near_order > order) gauss_legendre_01(near_order, near_nodes, near_weights);
+  const GaussRule01& near_rule = near_order > order ? gauss_legendre_rule_01(near_order) : face_rule;
+  const std::vector<double>&near_nodes = near_rule.nodes, &near_weights = near_rule.weights;
   const int near_depth = std::max(0, near_order - 3);
   std::array<Eigen::Vector3d, 4> corner;
   std::array<long, 4> id;
