@@ -305,8 +305,9 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
     double longest = 0;
     for (const auto& e : kEdges) longest = std::max(longest, (p[e[0]] - p[e[1]]).norm());
     int on[4], count = 0;
+    double corner_distance[4];
     for (int m = 0; m < 4; ++m)
-      if (front.distance(p[m], near) <= kOnFront * longest) on[count++] = m;
+      if ((corner_distance[m] = front.distance(p[m], near)) <= kOnFront * longest) on[count++] = m;
     if (layout.split_at_touch && count < 2 && level < kMaxLevels) {
       // The front touches an edge at an interior point, not at a vertex of this piece (e.g. a tet
       // beside the cut whose edge the front pierces, on a mesh with nodes in the front's plane): the
@@ -365,6 +366,18 @@ void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& 
         return bisect(k, l, 1);
       append_edge_rule(p[on[0]], p[on[1]], p[k], p[l], layout.radial, layout.along, layout.across, side, out);
       return;
+    }
+    // A piece surely beyond remote_ratio longest edges from the front takes the symmetric rule, which
+    // needs neither the nearest edge nor its distance: a point of an edge lies at least
+    // (d_i + d_j - |edge|) / 2 from the front, d_i and d_j its corners' distances. (The same choice as
+    // with the edges' distances, without their six searches.)
+    if (layout.remote_symmetric) {
+      double bound = std::numeric_limits<double>::infinity();
+      for (const auto& e : kEdges)
+        bound = std::min(bound, 0.5 * (corner_distance[e[0]] + corner_distance[e[1]] - (p[e[0]] - p[e[1]]).norm()));
+      const double needed = std::max(layout.remote_ratio, level < layout.far_levels ? layout.far_split_ratio : 0.0);
+      if (bound > needed * longest * (1 + 1e-12))
+        return append_symmetric_tet_rule(p[0], p[1], p[2], p[3], layout.remote, side, out);
     }
     double nearest = std::numeric_limits<double>::infinity();
     for (int e = 0; e < 6; ++e) {
