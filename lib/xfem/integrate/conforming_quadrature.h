@@ -106,6 +106,12 @@ struct TetRuleLayout {
   /// append_symmetric_tet_rule) instead of the collapsed remote^3 rule: there the integrand is
   /// smooth on the piece's scale, and a symmetric rule reaches a higher degree with fewer points.
   bool remote_symmetric = false;
+  /// A piece of a cut tet without a vertex on the front whose volume V, longest edge L and distance
+  /// d to the front bound any positive rule's error on it, V L / (d (d + L)), below this fraction of
+  /// its tet's V / h (h the tet's longest edge) takes the symmetric 4-point rule (0: never). The
+  /// slivers a cut much finer than the mesh makes near the front: they are most of the points of such
+  /// tets and almost none of their integral (of_order(n), n <= 3: 1e-2; docs/PERFORMANCE.md).
+  double small_piece_fraction = 0;
   /// A piece whose edge the front touches at an interior point (not at one of its vertices) is
   /// split there first, so that the point becomes a vertex of the rules' collapse (of_order(n);
   /// uniform(n) keeps the rule before, which collapses onto the nearest whole edge).
