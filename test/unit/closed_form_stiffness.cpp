@@ -62,9 +62,25 @@ std::vector<Case> make_catalogue() {
   return cases;
 }
 
-// Made once for both tests (the unstructured meshes take a while).
-const std::vector<Case>& catalogue() {
-  static const std::vector<Case> cases = make_catalogue();
+// A case classified, enriched and its cut elements split: what every test below starts from.
+struct Enriched {
+  std::string name;
+  xfem::EnrichedMesh em;
+  xfem::CutElementSplits splits;
+};
+
+// Made once for all the tests (the unstructured meshes and the organ's classification take a while).
+const std::vector<Enriched>& catalogue() {
+  static const std::vector<Enriched> cases = [] {
+    std::vector<Enriched> out;
+    for (const Case& c : make_catalogue()) {
+      const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
+      Enriched e{c.name, xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut), {}};
+      e.splits = xfem::split_cut_elements(e.em);
+      out.push_back(std::move(e));
+    }
+    return out;
+  }();
   return cases;
 }
 
@@ -79,10 +95,9 @@ int kind(const xfem::EnrichedMesh& em, int t, int c) {
 TEST_CASE("closed_form_stiffness: every block equals the exact-piece rule's on the cut catalogue",
           "[closed_form_stiffness]") {
   const xfem::Lame material = xfem::lame(3e5, 0.35);
-  for (const Case& c : catalogue()) {
-    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
-    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
-    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+  for (const Enriched& c : catalogue()) {
+    const xfem::EnrichedMesh& em = c.em;
+    const xfem::CutElementSplits& splits = c.splits;
     double worst = 0;  // largest |closed - pieces| / |block|
     long tets = 0, blocks = 0;
     int kinds_seen = 0;
@@ -123,10 +138,9 @@ TEST_CASE("closed_form_stiffness: every block equals the exact-piece rule's on t
 
 TEST_CASE("side_volumes: the pieces and the divergence theorem on the cut's polygons agree to 1e-13 (slivers 1e-9)",
           "[closed_form_stiffness]") {
-  for (const Case& c : catalogue()) {
-    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
-    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
-    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+  for (const Enriched& c : catalogue()) {
+    const xfem::EnrichedMesh& em = c.em;
+    const xfem::CutElementSplits& splits = c.splits;
     long compared = 0, both_sides = 0;
     double worst = 0;
     for (int t = 0; t < em.tets(); ++t) {
@@ -140,7 +154,7 @@ TEST_CASE("side_volumes: the pieces and the divergence theorem on the cut's poly
       for (int r = 0; r < pieces.size(); ++r) from_pieces[pieces.side[r] > 0 ? 0 : 1] += pieces.volume[r];
       std::array<V3, 4> p;
       for (int k = 0; k < 4; ++k) p[k] = em.mesh.points.row(em.mesh.tets(t, k)).transpose();
-      const std::array<double, 2> by_divergence = xfem::side_volumes_by_divergence(p, *cut);
+      const std::array<double, 2> by_divergence = xfem::side_volumes_by_divergence(p, *em.cut);
       INFO(c.name << ": tet " << t << ": pieces " << from_pieces[0] << " + " << from_pieces[1] << ", divergence "
                   << by_divergence[0] << " + " << by_divergence[1] << ", tet " << volume);
       // The sliver cut's plane is 1e-6 rad off the grid's faces: where it crosses an edge nearly
@@ -170,10 +184,9 @@ TEST_CASE("closed_form_stiffness: with --rule fast's points the closed-form bloc
   // the branch gradients the divergence theorem's). Sign x branch sums the points per side and
   // branch x branch is the volume rule: those two may change.
   const xfem::Lame material = xfem::lame(3e5, 0.35);
-  for (const Case& c : catalogue()) {
-    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
-    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
-    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+  for (const Enriched& c : catalogue()) {
+    const xfem::EnrichedMesh& em = c.em;
+    const xfem::CutElementSplits& splits = c.splits;
     xfem::PointRule fast, standard;
     Eigen::MatrixXd k_fast, k_standard;
     long branch_tets = 0, fewer = 0;
@@ -208,11 +221,10 @@ TEST_CASE("closed_form_stiffness: a workspace reused from tet to tet gives the s
   // `columns`) must be those columns of the whole matrix, bit for bit.
   const xfem::Lame material = xfem::lame(3e5, 0.35);
   long branch_tets = 0, compared = 0;
-  for (const Case& c : catalogue()) {
+  for (const Enriched& c : catalogue()) {
     if (c.name != "beam" && c.name != "organ" && c.name != "disc" && c.name != "zigzag") continue;
-    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
-    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
-    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+    const xfem::EnrichedMesh& em = c.em;
+    const xfem::CutElementSplits& splits = c.splits;
     std::vector<int> tets;
     for (int t = 0; t < em.tets(); ++t)
       if (!em.plain(t)) tets.push_back(t);
@@ -258,10 +270,9 @@ TEST_CASE("closed_form_stiffness: the small pieces' 4-point rule moves no branch
   xfem::TetRuleLayout without = xfem::TetRuleLayout::of_order(3);
   REQUIRE(without.small_piece_fraction == 1e-2);
   without.small_piece_fraction = 0;
-  for (const Case& c : catalogue()) {
-    const auto cut = std::make_shared<xfem::CutSurface>(c.cut);
-    const xfem::EnrichedMesh em = xfem::enriched_mesh(c.mesh, xfem::classify(c.mesh, *cut), cut);
-    const xfem::CutElementSplits splits = xfem::split_cut_elements(em);
+  for (const Enriched& c : catalogue()) {
+    const xfem::EnrichedMesh& em = c.em;
+    const xfem::CutElementSplits& splits = c.splits;
     xfem::PointRule with_budget, all;
     Eigen::MatrixXd k_with, k_all;
     long points_with = 0, points_all = 0;
