@@ -277,7 +277,7 @@ namespace {
 // of the edge concerned, the halves keeping the vertices on the front, until the front is at least
 // as far as that part is long. Gauss rules converge like rho^-2n with rho growing with that ratio.
 // `near`: the front's segments near a region holding p (CrackFront::near), for its distances.
-// `budget` (m^2, 0: none): the error a piece far from the front may leave (small_piece_fraction).
+// `budget` (m^2, 0: none): the error a piece away from the front may leave (small_piece_fraction).
 void append_tet_rule(const std::array<Eigen::Vector3d, 4>& p, const CrackFront& front, const CrackFront::Near& near,
                      const TetRuleLayout& layout, int side, PointRule& out, int level, double budget,
                      int angle_splits = 0) {
@@ -442,7 +442,7 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   // The sign enrichment is constant on each piece and the shape functions linear: one point per
   // piece integrates exactly. Branch functions need the front-singular Gauss rule.
   const bool branch = em.branch(t);
-  // The error the tet's small pieces may leave: small_piece_fraction of V / h, the scale of the
+  // The error each small piece of the tet may leave: small_piece_fraction of V / h, the scale of the
   // integral of 1 / r over a tet near the front.
   double budget = 0;
   if (layout.small_piece_fraction > 0) {
@@ -519,7 +519,8 @@ void sampled_gradients(const EnrichedMesh& em, int t, const PointRule& rule, int
       for (int i = 0; i < m; ++i) row[i] = dN[source[static_cast<std::size_t>(i)]];
     }
     for (int i = 0; i < m; ++i)
-      for (int k = 0; k < rows; ++k) gradients(first + k, i) = block[static_cast<std::size_t>(k) * static_cast<std::size_t>(m) + static_cast<std::size_t>(i)];
+      for (int k = 0; k < rows; ++k)
+        gradients(first + k, i) = block[static_cast<std::size_t>(k) * static_cast<std::size_t>(m) + static_cast<std::size_t>(i)];
   }
   // Variationally consistent integration (consistent_gradients.h): each branch function's sampled
   // gradient shifted by a constant so that the rule integrates it to its divergence-theorem value.
