@@ -102,23 +102,6 @@ bool find_line(const CrackFront& front, const CutSurface* cut, const std::array<
   return true;
 }
 
-// Gauss-Legendre rules on [0, 1]: nodes[k], weights[k] of k points.
-struct GaussTable {
-  std::vector<std::vector<double>> nodes, weights;
-};
-
-// The rules of 1 .. max(n, 4) points, made once per thread and kept (gauss_legendre_01's Newton
-// iterations took 3 % of the beam's assembly when made per tet). Valid until the next call.
-const GaussTable& gauss_table(int n) {
-  thread_local GaussTable table;
-  for (int k = static_cast<int>(table.nodes.size()); k <= std::max(n, 4); ++k) {
-    table.nodes.emplace_back();
-    table.weights.emplace_back();
-    if (k > 0) gauss_legendre_01(k, table.nodes[k], table.weights[k]);
-  }
-  return table;
-}
-
 // Points for a stretch of length `span` in v: `most` for a stretch of kStretch, fewer for shorter
 // ones. Gauss's error on an interval of half-length l for a function analytic in |Im v| < pi / 2
 // falls like rho^-2n, rho = q + sqrt(q^2 + 1), q = (pi / 2) / l: the same accuracy with
@@ -141,7 +124,7 @@ int stretch_points(double span, int most) {
 // in a strip of half-width pi / 2 however close the line passes; stretches longer than kStretch in v
 // are divided. An edge whose line holds the origin bounds no area: no points.
 template <class Visit>
-void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const GaussTable& gauss, int most, Visit&& visit) {
+void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, int most, Visit&& visit) {
   const Eigen::Vector2d d = B - A;
   const double length = d.norm();
   if (length == 0) return;
@@ -165,7 +148,8 @@ void edge_angles(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const Gauss
     for (int piece = 0; piece < pieces; ++piece) {
       const double va = v0 + (v1 - v0) * piece / pieces, span = (v1 - v0) / pieces;
       const int n = stretch_points(span, most);
-      const std::vector<double>&nodes = gauss.nodes[n], &weights = gauss.weights[n];
+      const GaussRule01& gauss = gauss_legendre_rule_01(n);
+      const std::vector<double>&nodes = gauss.nodes, &weights = gauss.weights;
       for (std::size_t i = 0; i < nodes.size(); ++i) {
         const double v = va + span * nodes[i];
         const Eigen::Vector2d X = foot + p * std::sinh(v) * dir;
@@ -282,8 +266,8 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
 
   // 4. The points: each face's prism, its shadow by the triangles (origin, edge).
   const int most = angle_points + std::max(0, extra);
-  const GaussTable& angles = gauss_table(most);
-  const std::vector<double>&gs = angles.nodes[4], &gsw = angles.weights[4], &gt = angles.nodes[2], &gtw = angles.weights[2];
+  const GaussRule01 &rule_s = gauss_legendre_rule_01(4), &rule_t = gauss_legendre_rule_01(2);
+  const std::vector<double>&gs = rule_s.nodes, &gsw = rule_s.weights, &gt = rule_t.nodes, &gtw = rule_t.weights;
   const double zeta0 = c_local.z();
   PointRule negative;
   std::vector<TipCoordinates> negative_tips;
@@ -294,7 +278,7 @@ bool straight_front_rule(const EnrichedMesh& em, const CutElementSplits& splits,
     const Face& face = faces[i];
     const int* f = face.corner;
     for (int e = 0; e < 3; ++e)
-      edge_angles(q[f[e]], q[f[(e + 1) % 3]], angles, most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
+      edge_angles(q[f[e]], q[f[(e + 1) % 3]], most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
         for (std::size_t is = 0; is < gs.size(); ++is) {
           const double sigma = gs[is], rho = rho_edge * sigma * sigma;
           const double radial = 2 * rho_edge * rho_edge * sigma * sigma * sigma * gsw[is];  // rho d rho
@@ -370,8 +354,8 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
     amplification = most;
   }
   const int most = angle_points + static_cast<int>(std::ceil(std::log(amplification) / std::log(19.4)));
-  const GaussTable& angles = gauss_table(most);
-  const std::vector<double>&gs = angles.nodes[4], &gsw = angles.weights[4], &gt = angles.nodes[2], &gtw = angles.weights[2];
+  const GaussRule01 &rule_s = gauss_legendre_rule_01(4), &rule_t = gauss_legendre_rule_01(2);
+  const std::vector<double>&gs = rule_s.nodes, &gsw = rule_s.weights, &gt = rule_t.nodes, &gtw = rule_t.weights;
   TipCoordinates tip;
   tip.grad.row(0) = line.a.transpose();
   tip.grad.row(1) = line.b.transpose();
@@ -393,7 +377,7 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
     const double sign = J.determinant() > 0 ? 1.0 : -1.0;
     const double scale = sign / std::abs(nc);
     for (int e = 0; e < 3; ++e)
-      edge_angles(q[e], q[(e + 1) % 3], angles, most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
+      edge_angles(q[e], q[(e + 1) % 3], most, [&](const Eigen::Vector2d& unit, double rho_edge, int side, double dtheta) {
         for (std::size_t is = 0; is < gs.size(); ++is) {
           const double sigma = gs[is];
           const Eigen::Vector2d x = rho_edge * sigma * sigma * unit;
@@ -446,11 +430,11 @@ bool straight_front_face_integrals(const CrackFront& front, const CutSurface* cu
       const double v0 = std::asinh(s0 / p), v1 = std::asinh(s1 / p);
       const int pieces = std::max(1, static_cast<int>(std::ceil((v1 - v0) / kStretch)));
       const double span = (v1 - v0) / pieces;
-      const int n = stretch_points(span, angle_points);
+      const GaussRule01& gauss = gauss_legendre_rule_01(stretch_points(span, angle_points));
       for (int piece = 0; piece < pieces; ++piece)
-        for (int i = 0; i < n; ++i) {
-          const double v = v0 + span * (piece + angles.nodes[n][i]);
-          nodes.push_back({p * std::sinh(v), p * std::cosh(v) * span * angles.weights[n][i]});
+        for (std::size_t i = 0; i < gauss.nodes.size(); ++i) {
+          const double v = v0 + span * (piece + gauss.nodes[i]);
+          nodes.push_back({p * std::sinh(v), p * std::cosh(v) * span * gauss.weights[i]});
         }
     } else {
       const double sign = smid > 0 ? 1.0 : -1.0;
