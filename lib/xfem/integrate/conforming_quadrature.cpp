@@ -8,6 +8,7 @@
 
 #include "xfem/integrate/consistent_gradients.h"
 #include "xfem/enrich/enriched_basis.h"
+#include "xfem/enrich/split_by_cuts.h"
 #include "xfem/core/error.h"
 #include "xfem/geometry/tet_shape.h"
 
@@ -444,13 +445,9 @@ void conforming_rule(const EnrichedMesh& em, const CutElementSplits& splits, int
   const bool branch = em.branch(t);
   // The error each small piece of the tet may leave: small_piece_fraction of V / h, the scale of the
   // integral of 1 / r over a tet near the front.
-  double budget = 0;
-  if (layout.small_piece_fraction > 0) {
-    double longest = 0;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) longest = std::max(longest, (p[a] - p[b]).norm());
-    budget = layout.small_piece_fraction * std::abs(signed_volume(p[0], p[1], p[2], p[3])) / longest;
-  }
+  const double budget = layout.small_piece_fraction > 0
+                            ? layout.small_piece_fraction * std::abs(signed_volume(p[0], p[1], p[2], p[3])) / longest_edge(p)
+                            : 0.0;
   for (int s = splits.first[i]; s < splits.first[i + 1]; ++s) {
     const auto& q = splits.tets[s];
     if (branch) {
