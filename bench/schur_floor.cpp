@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The floor of a sweep step's Schur factor update (issue 35, docs/PERFORMANCE.md "Progressive
-// cutting"). Every cutting step of an xfem-sweep report updates S's Cholesky factor with
+// The floor of a sweep step's Schur factor update (issue 35, docs/PERFORMANCE.md "The speed targets
+// against this machine's floors"). Every cutting step of an xfem-sweep report updates S's
+// Cholesky factor with
 //   the new rows against the kept factor   (triangular solve, k rows x p: k p^2 flops)
 //   the trailing block's update            (t^2 p)
 //   the trailing block's factorization     (t^3 / 3)
