@@ -30,7 +30,8 @@ std::vector<CrackFacePoint> crack_face_rule(const EnrichedMesh& em, int order, c
   if (!em.cut || em.cut_class.empty()) return out;
   const int n = std::max(order, 1);
   const GaussRule01& gauss = gauss_legendre_rule_01(n);
-  const std::vector<double>&g = gauss.nodes, &gw = gauss.weights;
+  const std::vector<double>& g = gauss.nodes;
+  const std::vector<double>& gw = gauss.weights;
   const TriangleMesh& surface = em.cut->mesh();
   for (int t = 0; t < em.tets(); ++t) {
     if (em.plain(t)) continue;  // not only split tets: a face on the cut (cut_face_points)

@@ -268,7 +268,8 @@ void cut_face_points(const EnrichedMesh& em, int t, int k, int order, std::vecto
   const int n = std::max(face_order, 2);
   const int depth = std::max(0, face_order - 3);
   const GaussRule01& gauss = gauss_legendre_rule_01(n);
-  const std::vector<double>&nodes = gauss.nodes, &weights = gauss.weights;
+  const std::vector<double>& nodes = gauss.nodes;
+  const std::vector<double>& weights = gauss.weights;
   std::vector<Eigen::Vector3d> x;
   std::vector<double> w;
   const TriangleMesh& surface = cut->mesh();
