@@ -61,24 +61,33 @@ namespace {
 // A B for a dense A and a sparse B, neighbouring columns of B with the same rows (an enriched
 // node's 3 components, a branch node's 4 functions: one support) multiplied together with A's
 // columns gathered once for them: A (G, 5,436^2 doubles on the organ) is too large for the caches,
-// and reading a column of it per non-zero of B dominated.
+// and reading a column of it per non-zero of B dominated. The groups in threads: each writes its
+// own columns of the result, computed alike on any thread, so the bits do not depend on the count.
 Eigen::MatrixXd times_sparse(const Eigen::Ref<const Eigen::MatrixXd>& A, const SparseMatrix& B) {
   const long r = A.rows(), k = B.cols();
-  Eigen::MatrixXd V(r, k), Ap, D;
   const int* outer = B.outerIndexPtr();
   const int* inner = B.innerIndexPtr();
+  std::vector<long> group_begin;  // first column of each group, then k
   for (long j = 0; j < k;) {
+    group_begin.push_back(j);
     long j2 = j + 1;
     while (j2 < k && std::equal(inner + outer[j], inner + outer[j + 1], inner + outer[j2], inner + outer[j2 + 1])) ++j2;
-    const long p = outer[j + 1] - outer[j], g = j2 - j;
-    Ap.resize(r, p);
-    for (long i = 0; i < p; ++i) Ap.col(i) = A.col(inner[outer[j] + i]);
-    D.resize(p, g);
-    for (long c = 0; c < g; ++c)
-      for (long i = 0; i < p; ++i) D(i, c) = B.valuePtr()[outer[j + c] + i];
-    V.middleCols(j, g).noalias() = Ap * D;
     j = j2;
   }
+  group_begin.push_back(k);
+  Eigen::MatrixXd V(r, k);
+  parallel_for(static_cast<long>(group_begin.size()) - 1, [&](long begin, long end) {
+    Eigen::MatrixXd Ap, D;
+    for (long gi = begin; gi < end; ++gi) {
+      const long j = group_begin[gi], g = group_begin[gi + 1] - j, p = outer[j + 1] - outer[j];
+      Ap.resize(r, p);
+      for (long i = 0; i < p; ++i) Ap.col(i) = A.col(inner[outer[j] + i]);
+      D.resize(p, g);
+      for (long c = 0; c < g; ++c)
+        for (long i = 0; i < p; ++i) D(i, c) = B.valuePtr()[outer[j + c] + i];
+      V.middleCols(j, g).noalias() = Ap * D;
+    }
+  }, {}, 8);
   return V;
 }
 }  // namespace
@@ -148,15 +157,14 @@ void IncrementalSchur::update(const std::vector<EnrichedColumn>& cols, Increment
         if (w != q) moves.emplace_back(w, q);
         ++w;
       }
+    // Every column on its own: in threads, the same copies.
     if (!moves.empty()) {
-      for (long c = 0; c < m_kept; ++c) {
-        double* s = S_.col(c).data();
-        for (const auto& [to, from] : moves) s[to] = s[from];
-      }
-      for (long c = 0; c < p; ++c) {
-        double* l = L_.col(c).data();
-        for (const auto& [to, from] : moves) l[to] = l[from];
-      }
+      parallel_for(m_kept + p, [&](long begin, long end) {
+        for (long c = begin; c < end; ++c) {
+          double* x = c < m_kept ? S_.col(c).data() : L_.col(c - m_kept).data();
+          for (const auto& [to, from] : moves) x[to] = x[from];
+        }
+      }, {}, 64);
     }
   }
   std::vector<EnrichedColumn> order;
