@@ -24,21 +24,14 @@
 
 #include <Eigen/Core>
 
+#include "xfem/core/median.h"
+#include "xfem/core/seconds_since.h"
+
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
                        const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
                        const double* beta, double* c, const int* ldc);
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /// The best rate of RUNS products C -= A B^T of n x n matrices: flop/s.
 double peak_rate(int runs) {
@@ -50,7 +43,7 @@ double peak_rate(int runs) {
   for (int r = 0; r < runs + 1; ++r) {  // the first run starts OpenBLAS's threads: not counted
     const auto t0 = std::chrono::steady_clock::now();
     dgemm_("N", "T", &n, &n, &n, &minus, A.data(), &n, B.data(), &n, &one, C.data(), &n);
-    if (r > 0) best = std::min(best, seconds_since(t0));
+    if (r > 0) best = std::min(best, xfem::seconds_since(t0));
   }
   if (!std::isfinite(C(0, 0))) {
     std::fprintf(stderr, "schur_floor: the product is not finite\n");
@@ -108,5 +101,5 @@ int main(int argc, char** argv) {
     gflop.push_back(flops / 1e9);
   }
   std::printf("median over %zu steps: %.3f GFlop, floor %.2f ms, the steps' factor update %.2f ms\n", steps.size(),
-              median(gflop), 1e3 * median(floor_s), 1e3 * median(measured_s));
+              xfem::median(gflop), 1e3 * xfem::median(floor_s), 1e3 * xfem::median(measured_s));
 }

@@ -12,6 +12,7 @@
 #include <ctime>
 #include <vector>
 
+#include "xfem/core/median.h"
 #include "xfem/core/thread_limit.h"
 #include "xfem/enrich/growing_classification.h"
 #include "xfem/generate/cut_sweep.h"
@@ -37,11 +38,6 @@ bool same(const xfem::Classification& a, const xfem::Classification& b) {
   return true;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t h = v.size() / 2;
-  return v.empty() ? 0.0 : v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
-}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -80,6 +76,6 @@ int main(int argc, char** argv) {
                 growing.stats().edges, growing.stats().tets, equal ? "yes" : "NO");
   }
   std::printf("median over the %zu incremental steps (thread CPU, ms): growing %.2f, from scratch %.2f; unequal steps %d\n",
-              grown.size(), 1e3 * median(grown), 1e3 * median(scratch), unequal);
+              grown.size(), 1e3 * xfem::median(grown), 1e3 * xfem::median(scratch), unequal);
   return unequal ? 1 : 0;
 }

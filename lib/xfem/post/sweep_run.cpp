@@ -14,6 +14,7 @@
 #include "xfem/core/cli.h"
 #include "xfem/core/error.h"
 #include "xfem/core/fingerprint.h"
+#include "xfem/core/median.h"
 #include "xfem/core/thread_limit.h"
 #include "xfem/core/version.h"
 #include "xfem/generate/cut_sweep.h"
@@ -193,16 +194,13 @@ void run_sweep(const SweepOptions& o) {
       walls.push_back(wall[k - 1]);
       cpus.push_back(cpu[k - 1]);
     }
-    std::sort(cpus.begin(), cpus.end());
-    std::sort(walls.begin(), walls.end());
-    const std::size_t h = walls.size() / 2;
-    const double median_wall = walls.size() % 2 ? walls[h] : 0.5 * (walls[h - 1] + walls[h]);
-    const StepSplit median = median_split(splits);
-    cli::info(describe_median_split(median, static_cast<long>(splits.size()), median_wall));
-    report["median_step"] = split_json(median);
+    const double median_wall = median(walls);
+    const StepSplit parts = median_split(splits);
+    cli::info(describe_median_split(parts, static_cast<long>(splits.size()), median_wall));
+    report["median_step"] = split_json(parts);
     report["median_step"]["steps"] = static_cast<long>(splits.size());
     report["median_step"]["wall_seconds"] = median_wall;
-    report["median_step"]["cpu_seconds"] = cpus.size() % 2 ? cpus[h] : 0.5 * (cpus[h - 1] + cpus[h]);
+    report["median_step"]["cpu_seconds"] = median(cpus);
   }
   write_paraview_collection(collection, files.in_dir("sweep.pvd"));
   if (!o.report_path.empty()) write_json(report, o.report_path);

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "xfem/core/cli.h"
+#include "xfem/core/median.h"
 
 namespace xfem {
 
@@ -55,18 +56,13 @@ Json split_json(const StepSplit& s) {
 }
 
 StepSplit median_split(const std::vector<StepSplit>& splits) {
-  const auto median = [&](double StepSplit::*part) {
-    std::vector<double> v;
-    for (const auto& s : splits) v.push_back(s.*part);
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t h = v.size() / 2;
-    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
-  };
   StepSplit m;
   for (auto part : {&StepSplit::classify, &StepSplit::enrich, &StepSplit::integrate, &StepSplit::gather,
-                    &StepSplit::schur_update, &StepSplit::solve, &StepSplit::back_substitution, &StepSplit::frame})
-    m.*part = median(part);
+                    &StepSplit::schur_update, &StepSplit::solve, &StepSplit::back_substitution, &StepSplit::frame}) {
+    std::vector<double> v;
+    for (const auto& s : splits) v.push_back(s.*part);
+    m.*part = median(v);
+  }
   return m;
 }
 
